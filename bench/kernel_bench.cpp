@@ -1,0 +1,100 @@
+// Micro-benchmarks of the geometry kernel. Pairs are random unit-size
+// triangles at the distances the engine sees at its leaves: close (within a
+// tenth of their size), some intersecting. Run:
+//   proxima_kernel_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include "geometry/predicates.h"
+#include "geometry/triangle_distance.h"
+#include "geometry/triangle_intersection.h"
+#include "geometry/visibility.h"
+
+#include <benchmark/benchmark.h>
+#include <glm/geometric.hpp>
+
+#include <random>
+#include <vector>
+
+namespace {
+
+using namespace prox;
+
+struct Pair {
+  Triangle a, b;
+  Vec3 na[3], nb[3];
+};
+
+// `gap` scales how far apart the pairs are: 0.1 gives mostly separated
+// close pairs, 0 gives mostly intersecting ones.
+std::vector<Pair> make_pairs(double gap, std::size_t count = 4096) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  auto vec = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  std::vector<Pair> pairs(count);
+  for (Pair& p : pairs) {
+    for (Vec3& v : p.a.v) v = vec();
+    const Vec3 n = glm::normalize(glm::cross(p.a.v[1] - p.a.v[0], p.a.v[2] - p.a.v[0]));
+    // b sits on a's front side, facing it, about `gap` away.
+    for (Vec3& v : p.b.v) v = vec() * 0.9 + n * (0.5 + gap * (u(rng) + 0.5) * 2.0);
+    for (int i = 0; i < 3; ++i) p.na[i] = n + 0.2 * vec(), p.nb[i] = -n + 0.2 * vec();
+  }
+  return pairs;
+}
+
+void BM_TriangleDistance(benchmark::State& state) {
+  const std::vector<Pair> pairs = make_pairs(static_cast<double>(state.range(0)) / 100.0);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Pair& p = pairs[i++ % pairs.size()];
+    benchmark::DoNotOptimize(geometry::triangle_distance(p.a, p.b));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_TriangleDistance)->Arg(0)->Arg(10)->Arg(100)->ArgName("gap_percent");
+
+void BM_TrianglesIntersect(benchmark::State& state) {
+  const std::vector<Pair> pairs = make_pairs(static_cast<double>(state.range(0)) / 100.0);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Pair& p = pairs[i++ % pairs.size()];
+    benchmark::DoNotOptimize(geometry::triangles_intersect(p.a, p.b));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_TrianglesIntersect)->Arg(0)->Arg(10)->ArgName("gap_percent");
+
+void BM_VisibilityPretest(benchmark::State& state) {
+  const std::vector<Pair> pairs = make_pairs(0.1);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Pair& p = pairs[i++ % pairs.size()];
+    benchmark::DoNotOptimize(geometry::visibility_pretest(p.a, p.na, p.b, p.nb));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_VisibilityPretest);
+
+void BM_Orient3d(benchmark::State& state) {
+  const std::vector<Pair> pairs = make_pairs(0.1);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Pair& p = pairs[i++ % pairs.size()];
+    benchmark::DoNotOptimize(geometry::orient3d(p.a.v[0], p.a.v[1], p.a.v[2], p.b.v[0]));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_Orient3d);
+
+// The exact path of orient3d: coplanar points, where the filter cannot decide.
+void BM_Orient3dExactPath(benchmark::State& state) {
+  const Vec3 a(0.1, 0.2, 0.3), b(1.7, 0.2, 0.3), c(0.1, 3.1, 0.3);
+  Vec3 d(0.5, 0.5, 0.3);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(d);
+    benchmark::DoNotOptimize(geometry::orient3d(a, b, c, d));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_Orient3dExactPath);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Builds everything and runs every test: the core alone (optional parts off),
+# an AddressSanitizer + UndefinedBehaviorSanitizer build of the whole suite,
+# the micro-benchmarks once (so they never rot), and the release suite last.
+# Works on a fresh Debian 12 machine; installs the packages it needs.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+. scripts/deps.sh
+need_packages "${CORE_PACKAGES[@]}" libbenchmark-dev
+
+jobs=$(nproc)
+configure() {  # configure DIR [cmake args...]
+  local dir=$1
+  shift
+  cmake -S . -B "$dir" -G Ninja -DPROX_WARNINGS_AS_ERRORS=ON "$@" >/dev/null
+}
+
+echo "== core only (no tests, no benchmarks)"
+configure build/core -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_BENCHMARKS=OFF
+cmake --build build/core -j "$jobs"
+
+echo "== address + undefined-behaviour sanitizers"
+configure build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=address,undefined
+cmake --build build/asan -j "$jobs"
+ctest --test-dir build/asan --output-on-failure -j "$jobs"
+
+echo "== release"
+configure build/release -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_BENCHMARKS=ON
+cmake --build build/release -j "$jobs"
+echo "-- micro-benchmark smoke run"
+build/release/bench/proxima_kernel_bench --benchmark_min_time=0.01 >/dev/null
+ctest --test-dir build/release --output-on-failure -j "$jobs"

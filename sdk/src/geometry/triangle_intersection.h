@@ -1,0 +1,32 @@
+// Triangle-triangle intersection: an exact verdict and the intersection set.
+#pragma once
+
+#include "geometry/types.h"
+
+namespace prox::geometry {
+
+// True when the two closed triangles share at least one point (touching counts).
+// Exact for all finite input: every decision is an exact orientation predicate.
+// Degenerate triangles count as the segment or point they span.
+bool triangles_intersect(const Triangle& a, const Triangle& b);
+
+struct TriangleIntersection {
+  static constexpr int kMaxPoints = 12;
+
+  bool intersects = false;
+  // Both triangles are non-degenerate and lie exactly in one plane: `points`
+  // is then their overlap, a convex polygon in counter-clockwise order around
+  // a's normal (3 to 6 points, fewer when the overlap is itself degenerate).
+  bool coplanar = false;
+  // Otherwise: 1 point where the triangles touch in a point, or 2 points, the
+  // ends of the intersection segment.
+  int count = 0;
+  Vec3 points[kMaxPoints];
+};
+
+// The intersection set. The verdict is exact (identical to
+// triangles_intersect); the points are constructed in floating point and are
+// accurate to a few ulps of the triangles' size.
+TriangleIntersection intersect_triangles(const Triangle& a, const Triangle& b);
+
+}  // namespace prox::geometry

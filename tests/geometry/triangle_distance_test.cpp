@@ -1,0 +1,139 @@
+// Hand-derived cases for the triangle-triangle distance; the stress suite
+// covers the random families against the quad-precision reference.
+#include "geometry/triangle_distance.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace prox::geometry {
+namespace {
+
+constexpr FeatureKind V = FeatureKind::Vertex, E = FeatureKind::Edge, F = FeatureKind::Face;
+
+const Triangle kUnitXY{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}};
+
+void expect_point(const Vec3& got, const Vec3& want) {
+  EXPECT_NEAR(got.x, want.x, 1e-15);
+  EXPECT_NEAR(got.y, want.y, 1e-15);
+  EXPECT_NEAR(got.z, want.z, 1e-15);
+}
+
+TEST(TriangleDistance, VertexAboveFaceInterior) {
+  const Triangle b{{Vec3(0.25, 0.25, 2.0), Vec3(3, 3, 5), Vec3(-3, 2, 6)}};
+  const TriangleDistance r = triangle_distance(kUnitXY, b);
+  EXPECT_FALSE(r.intersects);
+  EXPECT_DOUBLE_EQ(r.distance, 2.0);
+  expect_point(r.point_a, Vec3(0.25, 0.25, 0));
+  expect_point(r.point_b, Vec3(0.25, 0.25, 2.0));
+  EXPECT_EQ(r.feature_a, (Feature{F, 0}));
+  EXPECT_EQ(r.feature_b, (Feature{V, 0}));
+}
+
+TEST(TriangleDistance, SkewEdgesCrossingAbove) {
+  // b's edge 0 runs along y at x = 0.5, z = 1, over a's hypotenuse-free edge 0 (the x axis).
+  const Triangle b{{Vec3(0.5, -1, 1), Vec3(0.5, 1, 1), Vec3(0.5, 0, 3)}};
+  const Triangle a{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 0, -1)}};
+  const TriangleDistance r = triangle_distance(a, b);
+  EXPECT_DOUBLE_EQ(r.distance, 1.0);
+  expect_point(r.point_a, Vec3(0.5, 0, 0));
+  expect_point(r.point_b, Vec3(0.5, 0, 1));
+  EXPECT_EQ(r.feature_a, (Feature{E, 0}));
+  EXPECT_EQ(r.feature_b, (Feature{E, 0}));
+}
+
+TEST(TriangleDistance, VertexToVertex) {
+  const Triangle b{{Vec3(2, 2, 0), Vec3(3, 2, 0), Vec3(2, 3, 0)}};
+  const Triangle a{{Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0.5)}};
+  const TriangleDistance r = triangle_distance(a, b);
+  EXPECT_DOUBLE_EQ(r.distance, std::sqrt(2.0));
+  EXPECT_EQ(r.feature_a, (Feature{V, 1}));
+  EXPECT_EQ(r.feature_b, (Feature{V, 0}));
+}
+
+TEST(TriangleDistance, ParallelFacesReportFacesAndTheMiddleOfTheOverlap) {
+  const Triangle big{{Vec3(-10, -10, 0), Vec3(10, -10, 0), Vec3(0, 10, 0)}};
+  const Triangle small{{Vec3(-1, -1, 0.5), Vec3(1, -1, 0.5), Vec3(0, 2, 0.5)}};
+  const TriangleDistance r = triangle_distance(big, small);
+  EXPECT_DOUBLE_EQ(r.distance, 0.5);
+  EXPECT_EQ(r.feature_a, (Feature{F, 0}));
+  EXPECT_EQ(r.feature_b, (Feature{F, 0}));
+  // The whole small triangle is closest: the middle of its candidates lies inside it.
+  EXPECT_NEAR(r.point_b.z, 0.5, 1e-15);
+  EXPECT_NEAR(r.point_a.z, 0.0, 1e-15);
+  EXPECT_NEAR(r.point_a.x, r.point_b.x, 1e-15);
+  EXPECT_NEAR(r.point_a.y, r.point_b.y, 1e-15);
+}
+
+TEST(TriangleDistance, ParallelEdgesReportEdges) {
+  const Triangle a{{Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(2, -3, 0)}};
+  const Triangle b{{Vec3(1, 1, 0), Vec3(6, 1, 0), Vec3(3, 4, 1)}};
+  const TriangleDistance r = triangle_distance(a, b);
+  EXPECT_DOUBLE_EQ(r.distance, 1.0);
+  EXPECT_EQ(r.feature_a, (Feature{E, 0}));
+  EXPECT_EQ(r.feature_b, (Feature{E, 0}));
+  // Closest set: x in [1, 4] on both; its middle is x = 2.5.
+  expect_point(r.point_a, Vec3(2.5, 0, 0));
+  expect_point(r.point_b, Vec3(2.5, 1, 0));
+}
+
+TEST(TriangleDistance, IntersectingIsZeroWithPointsOnBoth) {
+  const Triangle b{{Vec3(0.2, 0.2, -1), Vec3(0.2, 0.2, 1), Vec3(2, 2, 0)}};
+  const TriangleDistance r = triangle_distance(kUnitXY, b);
+  EXPECT_TRUE(r.intersects);
+  EXPECT_EQ(r.distance, 0.0);
+  EXPECT_EQ(r.point_a, r.point_b);
+  EXPECT_NEAR(r.point_a.z, 0.0, 1e-15);
+  EXPECT_NEAR(r.point_a.x, r.point_a.y, 1e-15);  // on the diagonal x = y where b's plane cuts a
+}
+
+TEST(TriangleDistance, DegenerateTrianglesAreTheirSegmentOrPoint) {
+  // a repeats a vertex (as CAD exports do): it is the segment (0,0,1)-(1,0,1).
+  const Triangle a{{Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(1, 0, 1)}};
+  const TriangleDistance r = triangle_distance(a, kUnitXY);
+  EXPECT_DOUBLE_EQ(r.distance, 1.0);
+  EXPECT_EQ(r.feature_b.kind, E);  // the closest set on the unit triangle is its edge 0
+  EXPECT_EQ(r.feature_a.kind, E);
+  // A point triangle.
+  const Triangle p{{Vec3(0.2, 0.2, -3), Vec3(0.2, 0.2, -3), Vec3(0.2, 0.2, -3)}};
+  const TriangleDistance q = triangle_distance(kUnitXY, p);
+  EXPECT_DOUBLE_EQ(q.distance, 3.0);
+  EXPECT_EQ(q.feature_a, (Feature{F, 0}));
+  EXPECT_EQ(q.feature_b.kind, V);
+}
+
+TEST(TriangleDistance, FarFromTheOriginKeepsPrecisionRelativeToSize) {
+  // 1 mm triangles 1e6 m from the origin (coordinates are multiples of 2^-23,
+  // so the inputs are exact), 1 um apart.
+  const double far = 1e6, mm = std::ldexp(1.0, -10), um = std::ldexp(1.0, -20);
+  const Triangle a{{Vec3(far, far, far), Vec3(far + mm, far, far), Vec3(far, far + mm, far)}};
+  const Triangle b{{Vec3(far, far, far + um), Vec3(far + mm, far, far + um), Vec3(far, far + mm, far + mm)}};
+  const TriangleDistance r = triangle_distance(a, b);
+  EXPECT_EQ(r.distance, um);
+  EXPECT_EQ(r.feature_a, (Feature{E, 0}));
+  EXPECT_EQ(r.feature_b, (Feature{E, 0}));
+}
+
+TEST(TriangleDistance, ClosestPointOnTriangleRegions) {
+  expect_point(closest_point_on_triangle(Vec3(0.2, 0.3, 5), kUnitXY), Vec3(0.2, 0.3, 0));
+  expect_point(closest_point_on_triangle(Vec3(-1, -1, 0), kUnitXY), Vec3(0, 0, 0));
+  expect_point(closest_point_on_triangle(Vec3(0.5, -2, 1), kUnitXY), Vec3(0.5, 0, 0));
+  expect_point(closest_point_on_triangle(Vec3(1, 1, 0), kUnitXY), Vec3(0.5, 0.5, 0));
+}
+
+TEST(TriangleDistance, SegmentSegmentParameters) {
+  // Crossing at right angles.
+  Vec2 st = closest_params_segment_segment(Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, -1, 1), Vec3(1, 1, 1));
+  EXPECT_NEAR(st.x, 0.5, 1e-15);
+  EXPECT_NEAR(st.y, 0.5, 1e-15);
+  // Parallel, overlapping on x in [1, 2]: the middle of the overlap.
+  st = closest_params_segment_segment(Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, 1, 0), Vec3(3, 1, 0));
+  EXPECT_NEAR(st.x, 0.75, 1e-15);
+  EXPECT_NEAR(st.y, 0.25, 1e-15);
+  // Zero-length segments.
+  st = closest_params_segment_segment(Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(-1, 1, 0), Vec3(1, 1, 0));
+  EXPECT_NEAR(st.y, 0.5, 1e-15);
+}
+
+}  // namespace
+}  // namespace prox::geometry
