@@ -1,0 +1,349 @@
+#include "contact/global_search.h"
+
+#include "geometry/sampled_distance.h"
+#include "geometry/triangle_distance.h"
+#include "geometry/visibility.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <unordered_map>
+
+namespace prox {
+
+MeshFeature mesh_feature(const Mesh& mesh, std::uint32_t triangle, Feature f) {
+  switch (f.kind) {
+    case FeatureKind::Vertex:
+      return {FeatureKind::Vertex, mesh.indices(triangle)[f.index]};
+    case FeatureKind::Edge:
+      return {FeatureKind::Edge, mesh.edge_id(triangle, f.index)};
+    case FeatureKind::Face:
+      break;
+  }
+  return {FeatureKind::Face, triangle};
+}
+
+namespace {
+
+// The search runs in A's local frame; B's nodes and triangles are moved into
+// it on the fly.
+struct Frames {
+  Pose b_to_a;
+  explicit Frames(const PairQuery& q) : b_to_a(q.pose_a.inverse() * q.pose_b) {}
+};
+
+struct NodePair {
+  const SnchNode& a;
+  Vec3 center_b;  // in A's frame
+  double radius_b;
+  Vec3 axis_b;  // in A's frame
+  double half_b;
+  bool cone_b_unbounded;
+};
+
+enum class Verdict { Pass, G1, G2, G3 };
+
+double center_distance(const NodePair& p) { return glm::length(p.center_b - p.a.center); }
+
+bool g1_rejects(const NodePair& p, double cutoff) {
+  return center_distance(p) - p.a.radius - p.radius_b > cutoff;
+}
+
+// G2: a local minimum needs a normal of A and a normal of B pointing at each
+// other; no such pair exists when the angle between A's axis and the reverse
+// of B's exceeds both half-angles together.
+bool g2_rejects(const NodePair& p) {
+  if (p.a.cone.unbounded() || p.cone_b_unbounded) return false;
+  const double opposite = kPi - angle_between(p.a.cone.axis, p.axis_b);
+  return opposite > p.a.cone.half_angle + p.half_b;
+}
+
+// G3.a / G3.b: every line from sphere A to sphere B lies within sigma of the
+// line between the centres; A's cone must reach that cone of lines, and B's
+// must reach its reverse.
+bool g3_rejects(const NodePair& p) {
+  const Vec3 between = p.center_b - p.a.center;
+  const double dist = glm::length(between);
+  const double reach = p.a.radius + p.radius_b;
+  if (!(dist > reach)) return false;  // overlapping spheres: lines go everywhere
+  const double sigma = std::asin(reach / dist);
+  const Vec3 dir = between / dist;
+  if (!p.a.cone.unbounded() && angle_between(dir, p.a.cone.axis) > sigma + p.a.cone.half_angle) return true;
+  if (!p.cone_b_unbounded && angle_between(-dir, p.axis_b) > sigma + p.half_b) return true;
+  return false;
+}
+
+// Simultaneous descent of both trees; `use_cones` switches G2/G3 on; `leaf`
+// is called for every leaf pair that passes.
+template <typename Leaf>
+void descend(const PairQuery& q, const Frames& frames, bool use_cones, GlobalSearchStats& stats, Leaf leaf) {
+  const Snch& ta = *q.snch_a;
+  const Snch& tb = *q.snch_b;
+  if (ta.nodes().empty() || tb.nodes().empty()) return;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> stack;
+  stack.reserve(256);
+  stack.emplace_back(0u, 0u);
+  while (!stack.empty()) {
+    const auto [ia, ib] = stack.back();
+    stack.pop_back();
+    ++stats.node_pairs;
+    const SnchNode& na = ta.node(ia);
+    const SnchNode& nb = tb.node(ib);
+    const NodePair p{na,
+                     frames.b_to_a.apply(nb.center),
+                     nb.radius,
+                     frames.b_to_a.rotate(nb.cone.axis),
+                     nb.cone.half_angle,
+                     nb.cone.unbounded()};
+    if (g1_rejects(p, q.cutoff)) {
+      ++stats.rejected_g1;
+      continue;
+    }
+    if (use_cones && g2_rejects(p)) {
+      ++stats.rejected_g2;
+      continue;
+    }
+    if (use_cones && g3_rejects(p)) {
+      ++stats.rejected_g3;
+      continue;
+    }
+    if (na.is_leaf() && nb.is_leaf()) {
+      ++stats.leaf_pairs;
+      leaf(na.first, nb.first);
+    } else if (nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius)) {
+      stack.emplace_back(na.second, ib);
+      stack.emplace_back(na.first, ib);
+    } else {
+      stack.emplace_back(ia, nb.second);
+      stack.emplace_back(ia, nb.first);
+    }
+  }
+}
+
+Triangle moved(const Triangle& t, const Pose& pose) {
+  return {{pose.apply(t.v[0]), pose.apply(t.v[1]), pose.apply(t.v[2])}};
+}
+
+LmdPair make_pair(const PairQuery& q, std::uint32_t ta, std::uint32_t tb, const Vec3& pa_local_a,
+                  const Vec3& pb_local_a, double distance, Feature fa, Feature fb) {
+  LmdPair r;
+  r.tri_a = ta;
+  r.tri_b = tb;
+  r.point_a = q.pose_a.apply(pa_local_a);
+  r.point_b = q.pose_a.apply(pb_local_a);
+  r.distance = distance;
+  r.feature_a = fa;
+  r.feature_b = fb;
+  r.mesh_feature_a = mesh_feature(*q.mesh_a, ta, fa);
+  r.mesh_feature_b = mesh_feature(*q.mesh_b, tb, fb);
+  return r;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+void global_search_precise(const PairQuery& q, std::vector<LmdPair>& out, GlobalSearchStats& stats) {
+  const auto start = std::chrono::steady_clock::now();
+  const Frames frames(q);
+  const Mesh& ma = *q.mesh_a;
+  const Mesh& mb = *q.mesh_b;
+  descend(q, frames, true, stats, [&](std::uint32_t ta, std::uint32_t tb) {
+    const Triangle a = ma.triangle(ta);
+    const Triangle b = moved(mb.triangle(tb), frames.b_to_a);
+    Vec3 na[3], nb[3];
+    for (int k = 0; k < 3; ++k) {
+      na[k] = ma.vertex_normal(ma.indices(ta)[k]);
+      nb[k] = frames.b_to_a.rotate(mb.vertex_normal(mb.indices(tb)[k]));
+    }
+    if (!geometry::visibility_pretest(a, na, b, nb)) {
+      ++stats.visibility_rejections;
+      return;
+    }
+    ++stats.distance_evaluations;
+    const geometry::TriangleDistance d = geometry::triangle_distance(a, b);
+    if (d.intersects || d.distance > q.cutoff) return;
+    ++stats.candidates;
+    out.push_back(make_pair(q, ta, tb, d.point_a, d.point_b, d.distance, d.feature_a, d.feature_b));
+  });
+  stats.seconds += seconds_since(start);
+}
+
+namespace {
+
+// The normal of a feature, for G5: vertex normal, edge normal or face normal.
+Vec3 feature_normal(const Mesh& mesh, std::uint32_t t, Feature f) {
+  switch (f.kind) {
+    case FeatureKind::Vertex:
+      return mesh.vertex_normal(mesh.indices(t)[f.index]);
+    case FeatureKind::Edge:
+      return mesh.edge_normal(t, f.index);
+    case FeatureKind::Face:
+      break;
+  }
+  return mesh.face_normal(t);
+}
+
+}  // namespace
+
+void global_search_original(const PairQuery& q, std::vector<LmdPair>& out, GlobalSearchStats& stats) {
+  const auto start = std::chrono::steady_clock::now();
+  const Frames frames(q);
+  const Mesh& ma = *q.mesh_a;
+  const Mesh& mb = *q.mesh_b;
+  descend(q, frames, true, stats, [&](std::uint32_t ta, std::uint32_t tb) {
+    ++stats.distance_evaluations;
+    const geometry::TriangleDistance d =
+        geometry::sampled_triangle_distance(ma.triangle(ta), moved(mb.triangle(tb), frames.b_to_a));
+    if (d.distance > q.cutoff) return;
+    // G5: the direction must leave A along A's feature normal and arrive at
+    // B against B's.
+    const Vec3 dir = d.point_b - d.point_a;
+    const Vec3 n_a = feature_normal(ma, ta, d.feature_a);
+    const Vec3 n_b = frames.b_to_a.rotate(feature_normal(mb, tb, d.feature_b));
+    if (!(glm::dot(dir, n_a) > 0.0 && glm::dot(dir, n_b) < 0.0)) {
+      ++stats.normal_rejections;
+      return;
+    }
+    ++stats.candidates;
+    out.push_back(make_pair(q, ta, tb, d.point_a, d.point_b, d.distance, d.feature_a, d.feature_b));
+  });
+  stats.seconds += seconds_since(start);
+}
+
+namespace {
+
+// Branch and bound for the closest pair below `bound`; with `first_below`
+// it returns as soon as any pair is closer than the bound.
+double closest_pair(const PairQuery& q, double bound, bool first_below, std::uint32_t* tri_a,
+                    std::uint32_t* tri_b) {
+  const Frames frames(q);
+  const Snch& ta = *q.snch_a;
+  const Snch& tb = *q.snch_b;
+  double best = INFINITY;
+  if (ta.nodes().empty() || tb.nodes().empty()) return best;
+  double limit = bound;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{0u, 0u}};
+  while (!stack.empty()) {
+    const auto [ia, ib] = stack.back();
+    stack.pop_back();
+    const SnchNode& na = ta.node(ia);
+    const SnchNode& nb = tb.node(ib);
+    const Vec3 cb = frames.b_to_a.apply(nb.center);
+    if (glm::length(cb - na.center) - na.radius - nb.radius > limit) continue;
+    if (na.is_leaf() && nb.is_leaf()) {
+      const double d = geometry::triangle_distance(q.mesh_a->triangle(na.first),
+                                                   moved(q.mesh_b->triangle(nb.first), frames.b_to_a))
+                           .distance;
+      if (d < best) {
+        best = d;
+        limit = std::min(limit, d);
+        if (tri_a) *tri_a = na.first;
+        if (tri_b) *tri_b = nb.first;
+        if (d == 0.0 || (first_below && d < bound)) break;
+      }
+    } else if (nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius)) {
+      // Nearer child last, so it is searched first and tightens the limit.
+      const double d0 = glm::length(cb - ta.node(na.first).center);
+      const double d1 = glm::length(cb - ta.node(na.second).center);
+      stack.emplace_back(d0 < d1 ? na.second : na.first, ib);
+      stack.emplace_back(d0 < d1 ? na.first : na.second, ib);
+    } else {
+      const double d0 = glm::length(frames.b_to_a.apply(tb.node(nb.first).center) - na.center);
+      const double d1 = glm::length(frames.b_to_a.apply(tb.node(nb.second).center) - na.center);
+      stack.emplace_back(ia, d0 < d1 ? nb.second : nb.first);
+      stack.emplace_back(ia, d0 < d1 ? nb.first : nb.second);
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+double minimum_distance(const PairQuery& q, double bound, std::uint32_t* tri_a, std::uint32_t* tri_b) {
+  return closest_pair(q, bound, false, tri_a, tri_b);
+}
+
+bool any_closer_than(const PairQuery& q, double distance) {
+  return closest_pair(q, distance, true, nullptr, nullptr) < distance;
+}
+
+namespace {
+
+std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; }
+
+// Triangles around a feature: N(vertex) its one-ring, N(edge) the triangles
+// sharing it, N(face) the triangle.
+void neighbourhood(const Mesh& mesh, std::uint32_t t, Feature f, std::vector<std::uint32_t>& out) {
+  out.clear();
+  switch (f.kind) {
+    case FeatureKind::Vertex: {
+      const std::uint32_t v = mesh.indices(t)[f.index];
+      out.assign(mesh.vertex_triangles_begin(v), mesh.vertex_triangles_end(v));
+      return;
+    }
+    case FeatureKind::Edge:
+      out.assign(mesh.edge_triangles_begin(t, f.index), mesh.edge_triangles_end(t, f.index));
+      return;
+    case FeatureKind::Face:
+      out.push_back(t);
+      return;
+  }
+}
+
+}  // namespace
+
+void reference_lmds(const PairQuery& q, std::vector<LmdPair>& out) {
+  const Frames frames(q);
+  const Mesh& ma = *q.mesh_a;
+  const Mesh& mb = *q.mesh_b;
+  // Every pair whose bounding spheres are within the cutoff (G1 only: a
+  // provable bound, so no pair within the cutoff is missed).
+  std::unordered_map<std::uint64_t, geometry::TriangleDistance> near;
+  std::vector<std::uint64_t> order;
+  GlobalSearchStats unused;
+  descend(q, frames, false, unused, [&](std::uint32_t ta, std::uint32_t tb) {
+    near.emplace(pair_key(ta, tb),
+                 geometry::triangle_distance(ma.triangle(ta), moved(mb.triangle(tb), frames.b_to_a)));
+    order.push_back(pair_key(ta, tb));
+  });
+  std::sort(order.begin(), order.end());
+
+  // Strictly closer means closer by more than rounding, relative to the models.
+  const double size = std::max(glm::length(ma.bounds().max - ma.bounds().min),
+                               glm::length(mb.bounds().max - mb.bounds().min));
+  const double tolerance = 1e-12 * size;
+  std::vector<std::uint32_t> around_a, around_b;
+  std::vector<std::pair<MeshFeature, MeshFeature>> seen;
+  for (const std::uint64_t key : order) {
+    const geometry::TriangleDistance& d = near.at(key);
+    if (d.intersects || d.distance > q.cutoff) continue;
+    const auto ta = static_cast<std::uint32_t>(key >> 32), tb = static_cast<std::uint32_t>(key & 0xFFFFFFFFu);
+    neighbourhood(ma, ta, d.feature_a, around_a);
+    neighbourhood(mb, tb, d.feature_b, around_b);
+    bool local_minimum = true;
+    for (std::uint32_t na : around_a) {
+      for (std::uint32_t nb : around_b) {
+        // A neighbour pair missing from `near` has spheres beyond the
+        // cutoff, so it is no closer than this pair.
+        const auto it = near.find(pair_key(na, nb));
+        if (it != near.end() && (it->second.intersects || it->second.distance < d.distance - tolerance)) {
+          local_minimum = false;
+          break;
+        }
+      }
+      if (!local_minimum) break;
+    }
+    if (!local_minimum) continue;
+    const MeshFeature fa = mesh_feature(ma, ta, d.feature_a), fb = mesh_feature(mb, tb, d.feature_b);
+    if (std::find(seen.begin(), seen.end(), std::make_pair(fa, fb)) != seen.end()) continue;
+    seen.emplace_back(fa, fb);
+    out.push_back(make_pair(q, ta, tb, d.point_a, d.point_b, d.distance, d.feature_a, d.feature_b));
+  }
+}
+
+}  // namespace prox

@@ -1,0 +1,46 @@
+// Local minimum distance (LMD) pairs between two meshes, and the query that
+// produces them.
+#pragma once
+
+#include "contact/pose.h"
+#include "mesh/mesh.h"
+#include "snch/snch.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace prox {
+
+// A feature named mesh-wide: a welded vertex id, an edge id (Mesh::edge_id)
+// or a triangle id. Two LMDs on the same pair of mesh features are one.
+struct MeshFeature {
+  FeatureKind kind = FeatureKind::Face;
+  std::uint32_t id = 0;
+
+  friend bool operator==(MeshFeature a, MeshFeature b) { return a.kind == b.kind && a.id == b.id; }
+  friend bool operator!=(MeshFeature a, MeshFeature b) { return !(a == b); }
+};
+
+MeshFeature mesh_feature(const Mesh& mesh, std::uint32_t triangle, Feature f);
+
+struct LmdPair {
+  std::uint32_t tri_a = 0, tri_b = 0;
+  Vec3 point_a{0.0}, point_b{0.0};  // closest points, world coordinates
+  double distance = 0.0;            // |point_b - point_a|, mesh units
+  Feature feature_a, feature_b;     // on tri_a and tri_b
+  MeshFeature mesh_feature_a, mesh_feature_b;
+};
+
+// Two meshes, each with its hierarchy and world pose, and the cutoff beyond
+// which pairs are not wanted.
+struct PairQuery {
+  const Mesh* mesh_a = nullptr;
+  const Snch* snch_a = nullptr;
+  Pose pose_a;
+  const Mesh* mesh_b = nullptr;
+  const Snch* snch_b = nullptr;
+  Pose pose_b;
+  double cutoff = 0.0;  // mesh units, >= 0
+};
+
+}  // namespace prox

@@ -1,0 +1,186 @@
+#include "contact/local_tracking.h"
+
+#include "contact/global_search.h"
+#include "geometry/sampled_distance.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <tuple>
+
+namespace prox {
+namespace {
+
+std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; }
+
+std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser: spreads pair keys over the table
+  x ^= x >> 30;
+  x *= 0xbf58476d1ce4e5b9ULL;
+  x ^= x >> 27;
+  x *= 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+void neighbourhood(const Mesh& mesh, std::uint32_t t, Feature f, std::vector<std::uint32_t>& out) {
+  out.clear();
+  switch (f.kind) {
+    case FeatureKind::Vertex: {
+      const std::uint32_t v = mesh.indices(t)[f.index];
+      out.insert(out.end(), mesh.vertex_triangles_begin(v), mesh.vertex_triangles_end(v));
+      return;
+    }
+    case FeatureKind::Edge:
+      out.insert(out.end(), mesh.edge_triangles_begin(t, f.index), mesh.edge_triangles_end(t, f.index));
+      return;
+    case FeatureKind::Face:
+      out.push_back(t);
+      return;
+  }
+}
+
+// A walk gives up after this many moves; real walks take a handful.
+constexpr int kMaxSteps = 256;
+
+}  // namespace
+
+std::uint32_t LocalTracker::find(std::uint64_t key) const {
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t i = mix(key) & mask;; i = (i + 1) & mask) {
+    if (slots_[i] == 0) return kMissing;
+    if (entries_[slots_[i] - 1].key == key) return slots_[i] - 1;
+  }
+}
+
+void LocalTracker::insert(std::uint64_t key, std::uint32_t index) {
+  const std::size_t mask = slots_.size() - 1;
+  std::size_t i = mix(key) & mask;
+  while (slots_[i] != 0) i = (i + 1) & mask;
+  slots_[i] = index + 1;
+}
+
+void LocalTracker::rehash(std::size_t slots) {
+  slots_.assign(slots, 0u);
+  for (std::uint32_t i = 0; i < entries_.size(); ++i) insert(entries_[i].key, i);
+}
+
+void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalTrackingStats& stats) {
+  const auto start = std::chrono::steady_clock::now();
+  // The cache lives for one update (the poses change between updates).
+  entries_.clear();
+  if (slots_.empty()) slots_.assign(4096, 0u);
+  std::fill(slots_.begin(), slots_.end(), 0u);
+  const Pose b_to_a = q.pose_a.inverse() * q.pose_b;
+  const Mesh& ma = *q.mesh_a;
+  const Mesh& mb = *q.mesh_b;
+  const double size = std::max(glm::length(ma.bounds().max - ma.bounds().min),
+                               glm::length(mb.bounds().max - mb.bounds().min));
+  const double tolerance = 1e-12 * size;
+
+  // The cache entry of a triangle pair, computed on first use. Returns an
+  // index: entries_ may grow while a walk holds it.
+  auto evaluate = [&](std::uint32_t ta, std::uint32_t tb, std::uint32_t owner) -> std::uint32_t {
+    const std::uint64_t key = pair_key(ta, tb);
+    const std::uint32_t hit = original_ ? kMissing : find(key);
+    if (hit != kMissing) {
+      ++stats.cache_hits;
+      return hit;
+    }
+    const Triangle b = mb.triangle(tb);
+    Entry e;
+    e.key = key;
+    e.owner = owner;
+    const Triangle a = ma.triangle(ta);
+    const Triangle moved_b{{b_to_a.apply(b.v[0]), b_to_a.apply(b.v[1]), b_to_a.apply(b.v[2])}};
+    e.result =
+        original_ ? geometry::sampled_triangle_distance(a, moved_b) : geometry::triangle_distance(a, moved_b);
+    ++stats.distance_evaluations;
+    const auto index = static_cast<std::uint32_t>(entries_.size());
+    entries_.push_back(e);
+    if (original_) return index;  // no cache: nothing is looked up again
+    if (2 * entries_.size() > slots_.size())
+      rehash(2 * slots_.size());
+    else
+      insert(key, index);
+    return index;
+  };
+
+  stats.pairs_in += static_cast<std::uint32_t>(lmds.size());
+  next_.clear();
+  for (std::uint32_t k = 0; k < lmds.size(); ++k) {
+    std::uint32_t ta = lmds[k].tri_a, tb = lmds[k].tri_b;
+    std::uint32_t here = evaluate(ta, tb, k);
+    // Standing where another LMD's walk stood: from there it follows that
+    // walk to the same minimum, so this one is a duplicate.
+    auto stand_on = [&](std::uint32_t index) {
+      Entry& e = entries_[index];
+      const bool duplicate = !original_ && e.visited && e.owner != k;
+      e.owner = k;
+      e.visited = true;
+      return duplicate;
+    };
+    bool duplicate = stand_on(here);
+    for (int step = 0; step < kMaxSteps && !duplicate; ++step) {
+      const geometry::TriangleDistance current = entries_[here].result;
+      if (current.intersects) break;
+      neighbourhood(ma, ta, current.feature_a, around_a_);
+      neighbourhood(mb, tb, current.feature_b, around_b_);
+      std::uint32_t best = here, best_a = ta, best_b = tb;
+      double best_distance = current.distance;
+      for (std::uint32_t na : around_a_)
+        for (std::uint32_t nb : around_b_) {
+          if (na == ta && nb == tb) continue;
+          const std::uint32_t e = evaluate(na, nb, k);
+          const geometry::TriangleDistance& r = entries_[e].result;
+          if (r.intersects || r.distance < best_distance - tolerance) {
+            best = e, best_a = na, best_b = nb;
+            best_distance = r.intersects ? -1.0 : r.distance;
+          }
+        }
+      if (best == here) break;  // a local minimum: it stays
+      ++stats.steps;
+      ta = best_a, tb = best_b, here = best;
+      duplicate = stand_on(here);
+    }
+    if (duplicate) {
+      ++stats.duplicates_dropped;
+      continue;
+    }
+    const geometry::TriangleDistance& r = entries_[here].result;
+    if (r.intersects || r.distance > q.cutoff) {
+      ++stats.dropped_out_of_range;
+      continue;
+    }
+    LmdPair out;
+    out.tri_a = ta;
+    out.tri_b = tb;
+    out.point_a = q.pose_a.apply(r.point_a);
+    out.point_b = q.pose_a.apply(r.point_b);
+    out.distance = r.distance;
+    out.feature_a = r.feature_a;
+    out.feature_b = r.feature_b;
+    out.mesh_feature_a = mesh_feature(ma, ta, r.feature_a);
+    out.mesh_feature_b = mesh_feature(mb, tb, r.feature_b);
+    next_.push_back(out);
+  }
+  // Two pairs on the same mesh features are one LMD.
+  std::sort(next_.begin(), next_.end(), [](const LmdPair& a, const LmdPair& b) {
+    return std::tie(a.mesh_feature_a.kind, a.mesh_feature_a.id, a.mesh_feature_b.kind, a.mesh_feature_b.id,
+                    a.tri_a, a.tri_b) < std::tie(b.mesh_feature_a.kind, b.mesh_feature_a.id,
+                                                 b.mesh_feature_b.kind, b.mesh_feature_b.id, b.tri_a,
+                                                 b.tri_b);
+  });
+  lmds.clear();
+  for (const LmdPair& p : next_) {
+    if (!lmds.empty() && lmds.back().mesh_feature_a == p.mesh_feature_a &&
+        lmds.back().mesh_feature_b == p.mesh_feature_b) {
+      ++stats.duplicates_dropped;
+      continue;
+    }
+    lmds.push_back(p);
+  }
+  stats.pairs_out += static_cast<std::uint32_t>(lmds.size());
+  stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace prox

@@ -1,0 +1,336 @@
+#include "mesh/mesh.h"
+
+#include "geometry/predicates.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <utility>
+
+namespace prox {
+namespace {
+
+constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+// A sum of unit normals shorter than this fraction of the weight that went
+// into it has (nearly) cancelled: its direction would be rounding noise.
+constexpr double kCancelTolerance = 1e-9;
+
+// Half-edges are numbered 3 t + k in 32 bits.
+constexpr std::uint32_t kMaxTriangles = 0xFFFFFFFFu / 3;
+
+Status invalid(std::string message) { return {StatusCode::InvalidArgument, std::move(message)}; }
+
+const char* non_finite_name(double x) { return std::isnan(x) ? "nan" : x > 0.0 ? "inf" : "-inf"; }
+
+Status validate(const MeshInput& in) {
+  if (in.triangle_count == 0) return invalid("mesh has no triangles");
+  if (in.triangle_count > kMaxTriangles)
+    return invalid("mesh has " + std::to_string(in.triangle_count) + " triangles; at most " +
+                   std::to_string(kMaxTriangles) + " are supported");
+  if (in.indices == nullptr)
+    return invalid("indices is NULL but triangle_count is " + std::to_string(in.triangle_count));
+  if (in.positions == nullptr && in.vertex_count > 0)
+    return invalid("positions is NULL but vertex_count is " + std::to_string(in.vertex_count));
+  static const char* const kAxis[3] = {"x", "y", "z"};
+  for (std::uint32_t v = 0; v < in.vertex_count; ++v) {
+    for (int c = 0; c < 3; ++c) {
+      const double x = in.positions[std::size_t{3} * v + c];
+      if (!std::isfinite(x))
+        return invalid("vertex " + std::to_string(v) + " has a non-finite " + kAxis[c] + " coordinate (" +
+                       non_finite_name(x) + ")");
+    }
+  }
+  for (std::uint32_t t = 0; t < in.triangle_count; ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t i = in.indices[std::size_t{3} * t + k];
+      if (i >= in.vertex_count)
+        return invalid("triangle " + std::to_string(t) + " has vertex index " + std::to_string(i) +
+                       ", out of range for " + std::to_string(in.vertex_count) + " vertices");
+    }
+  }
+  return Status::ok();
+}
+
+// -0.0 and 0.0 are the same point, so they must weld.
+double fold_zero(double x) { return x == 0.0 ? 0.0 : x; }
+
+std::uint64_t bits_of(double x) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return bits;
+}
+
+// The splitmix64 finaliser: every input bit reaches every output bit.
+std::uint64_t mix(std::uint64_t h) {
+  h ^= h >> 30;
+  h *= 0xBF58476D1CE4E5B9ull;
+  h ^= h >> 27;
+  h *= 0x94D049BB133111EBull;
+  return h ^ (h >> 31);
+}
+
+// Welds positions by exact (bitwise) equality in an open-addressing hash
+// table: linear time, and ids are handed out in order of first insertion.
+class Welder {
+ public:
+  explicit Welder(std::size_t expected) {
+    std::size_t size = 16;
+    while (size < 2 * expected) size *= 2;
+    slots_.assign(size, kNone);
+    positions_.reserve(expected);
+  }
+
+  std::uint32_t insert(const Vec3& p) {
+    const Vec3 q(fold_zero(p.x), fold_zero(p.y), fold_zero(p.z));
+    const std::uint64_t h = mix(bits_of(q.x) + mix(bits_of(q.y) + mix(bits_of(q.z))));
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = static_cast<std::size_t>(h) & mask;; i = (i + 1) & mask) {
+      if (slots_[i] == kNone) {
+        slots_[i] = static_cast<std::uint32_t>(positions_.size());
+        positions_.push_back(q);
+        return slots_[i];
+      }
+      const Vec3& r = positions_[slots_[i]];
+      if (bits_of(r.x) == bits_of(q.x) && bits_of(r.y) == bits_of(q.y) && bits_of(r.z) == bits_of(q.z))
+        return slots_[i];
+    }
+  }
+
+  const std::vector<Vec3>& positions() const { return positions_; }
+
+ private:
+  std::vector<std::uint32_t> slots_;
+  std::vector<Vec3> positions_;
+};
+
+// |d|. Its square under- or overflows only for lengths beyond about 1e+-145,
+// where hypot's scaling takes over.
+double length_of(const Vec3& d) {
+  const double l2 = glm::dot(d, d);
+  if (l2 > 1e-290 && l2 < 1e290) return std::sqrt(l2);
+  return std::hypot(d.x, d.y, d.z);
+}
+
+struct FaceGeometry {
+  Vec3 normal{0.0};
+  double angle[3] = {0.0, 0.0, 0.0};  // interior angle at each vertex
+};
+
+// Unit normal and angles of a triangle whose exact cross product is non-zero.
+FaceGeometry face_geometry(const Vec3& a, const Vec3& b, const Vec3& c) {
+  FaceGeometry g;
+  // Scaling by a power of two is exact and keeps the products below from
+  // overflowing or underflowing at any scale; normals and angles do not
+  // depend on it. The clamp keeps the factor itself finite for subnormal input.
+  const Vec3 m = glm::max(glm::abs(a), glm::max(glm::abs(b), glm::abs(c)));
+  const double s = std::ldexp(1.0, -std::max(std::ilogb(std::max({m.x, m.y, m.z})), -1020));
+  const Vec3 e[3] = {s * b - s * a, s * c - s * b, s * a - s * c};
+  // As in the distance kernel: on a sliver the rounding of the cross product
+  // along the longest edge would tilt the plane, so that part is projected out.
+  int k = 0;
+  for (int i = 1; i < 3; ++i)
+    if (glm::dot(e[i], e[i]) > glm::dot(e[k], e[k])) k = i;
+  Vec3 n = glm::cross(e[k], e[(k + 1) % 3]);
+  n -= (glm::dot(n, e[k]) / glm::dot(e[k], e[k])) * e[k];
+  // Rounding can cancel the cross product of a sliver thinner than about
+  // 1e-16 of its length: its plane is not determined in doubles, so it gets
+  // no normal, like a zero-area triangle.
+  const double len = length_of(n);
+  if (!(len > 0.0)) return g;
+  g.normal = n / len;
+  // |cross| is twice the area at every corner; atan2 stays accurate near 0 and pi.
+  for (int i = 0; i < 3; ++i) g.angle[i] = std::atan2(len, -glm::dot(e[i], e[(i + 2) % 3]));
+  return g;
+}
+
+// v / |v|, or zero when |v| is at most kCancelTolerance times `weight`, the
+// total weight of the unit vectors summed into v.
+Vec3 normalized_unless_cancelled(const Vec3& v, double weight) {
+  const double len = length_of(v);
+  return len > 0.0 && len > kCancelTolerance * weight ? v / len : Vec3(0.0);
+}
+
+// Offsets of a CSR array from per-row counts stored at offsets[row + 1].
+void prefix_sum(std::vector<std::uint32_t>& offsets) {
+  for (std::size_t i = 1; i < offsets.size(); ++i) offsets[i] += offsets[i - 1];
+}
+
+}  // namespace
+
+Mesh Mesh::build(const MeshInput& in, Status& status) {
+  status = validate(in);
+  if (!status) return {};
+  const std::size_t index_count = std::size_t{3} * in.triangle_count;
+
+  // Weld the referenced vertices in input order, so the welded order is the
+  // order of first appearance.
+  std::vector<std::uint8_t> referenced(in.vertex_count, 0);
+  for (std::size_t i = 0; i < index_count; ++i) referenced[in.indices[i]] = 1;
+  std::vector<std::uint32_t> welded_of(in.vertex_count, kNone);
+  Welder welder(static_cast<std::size_t>(std::count(referenced.begin(), referenced.end(), 1)));
+  for (std::uint32_t v = 0; v < in.vertex_count; ++v) {
+    if (!referenced[v]) continue;
+    const double* p = in.positions + std::size_t{3} * v;
+    welded_of[v] = welder.insert(Vec3(p[0], p[1], p[2]));
+  }
+
+  Mesh mesh;
+  MeshStats& stats = mesh.stats_;
+  stats.input_vertices = in.vertex_count;
+  stats.input_triangles = in.triangle_count;
+  for (std::uint32_t t = 0; t < in.triangle_count; ++t) {
+    const std::uint32_t* i = in.indices + std::size_t{3} * t;
+    const std::array<std::uint32_t, 3> w = {welded_of[i[0]], welded_of[i[1]], welded_of[i[2]]};
+    if (w[0] == w[1] || w[1] == w[2] || w[2] == w[0]) {
+      ++stats.dropped_triangles;
+      continue;
+    }
+    mesh.triangles_.push_back(w);
+    mesh.input_triangle_.push_back(t);
+  }
+  if (mesh.triangles_.empty()) {
+    status = invalid("mesh has no non-degenerate triangles: all " + std::to_string(in.triangle_count) +
+                     " repeat a vertex after welding");
+    return {};
+  }
+
+  // Keep only vertices of kept triangles, in welded order.
+  const std::vector<Vec3>& welded = welder.positions();
+  std::vector<std::uint32_t> final_of(welded.size(), kNone);
+  for (const auto& tri : mesh.triangles_)
+    for (std::uint32_t w : tri) final_of[w] = 0;
+  for (std::uint32_t w = 0; w < welded.size(); ++w) {
+    if (final_of[w] == kNone) continue;
+    final_of[w] = static_cast<std::uint32_t>(mesh.vertices_.size());
+    mesh.vertices_.push_back(welded[w]);
+  }
+  for (auto& tri : mesh.triangles_)
+    for (std::uint32_t& w : tri) w = final_of[w];
+
+  const std::uint32_t vertex_count = mesh.vertex_count();
+  const std::uint32_t triangle_count = mesh.triangle_count();
+  stats.vertices = vertex_count;
+  stats.triangles = triangle_count;
+
+  mesh.bounds_.min = mesh.bounds_.max = mesh.vertices_[0];
+  for (const Vec3& p : mesh.vertices_) {
+    mesh.bounds_.min = glm::min(mesh.bounds_.min, p);
+    mesh.bounds_.max = glm::max(mesh.bounds_.max, p);
+  }
+
+  // Face normals, and vertex normals weighted by the angle at the vertex: a
+  // face split into more triangles does not weigh more.
+  mesh.face_normals_.assign(triangle_count, Vec3(0.0));
+  std::vector<Vec3> normal_sum(vertex_count, Vec3(0.0));
+  std::vector<double> weight_sum(vertex_count, 0.0);
+  for (std::uint32_t t = 0; t < triangle_count; ++t) {
+    const auto& tri = mesh.triangles_[t];
+    const Vec3 &a = mesh.vertices_[tri[0]], &b = mesh.vertices_[tri[1]], &c = mesh.vertices_[tri[2]];
+    if (geometry::collinear3d(a, b, c)) {
+      ++stats.zero_area_triangles;
+      continue;
+    }
+    const FaceGeometry g = face_geometry(a, b, c);
+    mesh.face_normals_[t] = g.normal;
+    for (int k = 0; k < 3; ++k) {
+      normal_sum[tri[k]] += g.angle[k] * g.normal;
+      weight_sum[tri[k]] += g.angle[k];
+    }
+  }
+  mesh.vertex_normals_.assign(vertex_count, Vec3(0.0));
+  for (std::uint32_t v = 0; v < vertex_count; ++v)
+    mesh.vertex_normals_[v] = normalized_unless_cancelled(normal_sum[v], weight_sum[v]);
+
+  // Vertex -> triangles, by counting sort: ascending because triangles are
+  // visited in order.
+  mesh.vertex_tri_offsets_.assign(std::size_t{vertex_count} + 1, 0);
+  for (const auto& tri : mesh.triangles_)
+    for (std::uint32_t v : tri) ++mesh.vertex_tri_offsets_[v + 1];
+  prefix_sum(mesh.vertex_tri_offsets_);
+  mesh.vertex_tri_.resize(mesh.vertex_tri_offsets_.back());
+  {
+    std::vector<std::uint32_t> cursor(mesh.vertex_tri_offsets_.begin(), mesh.vertex_tri_offsets_.end() - 1);
+    for (std::uint32_t t = 0; t < triangle_count; ++t)
+      for (std::uint32_t v : mesh.triangles_[t]) mesh.vertex_tri_[cursor[v]++] = t;
+  }
+
+  // Edges. Half-edge h = 3 t + k runs from vertex k to vertex k + 1 of t.
+  // Bucketing half-edges by their lower vertex (a stable counting sort) and
+  // then sorting each bucket, as small as the vertex's degree, by the upper
+  // vertex groups equal edges without a global sort; edge ids follow
+  // (lower, upper) vertex order.
+  const std::uint32_t half_edges = 3 * triangle_count;
+  const auto end_vertex = [&](std::uint32_t h, std::uint32_t step) {
+    return mesh.triangles_[h / 3][(h % 3 + step) % 3];
+  };
+  const auto lower = [&](std::uint32_t h) { return std::min(end_vertex(h, 0), end_vertex(h, 1)); };
+  const auto upper = [&](std::uint32_t h) { return std::max(end_vertex(h, 0), end_vertex(h, 1)); };
+  std::vector<std::uint32_t> bucket_offsets(std::size_t{vertex_count} + 1, 0);
+  for (std::uint32_t h = 0; h < half_edges; ++h) ++bucket_offsets[lower(h) + 1];
+  prefix_sum(bucket_offsets);
+  std::vector<std::uint32_t> bucket(half_edges);
+  {
+    std::vector<std::uint32_t> cursor(bucket_offsets.begin(), bucket_offsets.end() - 1);
+    for (std::uint32_t h = 0; h < half_edges; ++h) bucket[cursor[lower(h)]++] = h;
+  }
+  mesh.triangle_edge_.assign(half_edges, kNone);
+  mesh.edge_tri_.reserve(half_edges);
+  mesh.edge_tri_offsets_.reserve(half_edges / 2 + 2);
+  mesh.edge_tri_offsets_.push_back(0);
+  for (std::uint32_t v = 0; v < vertex_count; ++v) {
+    const auto first = bucket.begin() + bucket_offsets[v], last = bucket.begin() + bucket_offsets[v + 1];
+    std::sort(first, last, [&](std::uint32_t g, std::uint32_t h) {
+      const std::uint32_t ug = upper(g), uh = upper(h);
+      return ug < uh || (ug == uh && g < h);
+    });
+    for (auto run = first; run != last;) {
+      const std::uint32_t u = upper(*run);
+      const auto id = static_cast<std::uint32_t>(mesh.edge_tri_offsets_.size() - 1);
+      auto it = run;
+      // Half-edges ascend within the run, so do their (distinct) triangles.
+      for (; it != last && upper(*it) == u; ++it) {
+        mesh.triangle_edge_[*it] = id;
+        mesh.edge_tri_.push_back(*it / 3);
+      }
+      const auto sharing = it - run;
+      if (sharing == 1) ++stats.boundary_edges;
+      if (sharing >= 3) ++stats.nonmanifold_edges;
+      mesh.edge_tri_offsets_.push_back(static_cast<std::uint32_t>(mesh.edge_tri_.size()));
+      mesh.longest_edge_ = std::max(mesh.longest_edge_, length_of(mesh.vertices_[u] - mesh.vertices_[v]));
+      run = it;
+    }
+  }
+  return mesh;
+}
+
+Vec3 Mesh::edge_normal(std::uint32_t t, int k) const {
+  Vec3 sum(0.0);
+  double weight = 0.0;
+  for (const std::uint32_t* s = edge_triangles_begin(t, k); s != edge_triangles_end(t, k); ++s) {
+    sum += face_normals_[*s];
+    if (face_normals_[*s] != Vec3(0.0)) weight += 1.0;
+  }
+  return normalized_unless_cancelled(sum, weight);
+}
+
+const std::uint32_t* Mesh::vertex_triangles_begin(std::uint32_t v) const {
+  return vertex_tri_.data() + vertex_tri_offsets_[v];
+}
+
+const std::uint32_t* Mesh::vertex_triangles_end(std::uint32_t v) const {
+  return vertex_tri_.data() + vertex_tri_offsets_[std::size_t{v} + 1];
+}
+
+const std::uint32_t* Mesh::edge_triangles_begin(std::uint32_t t, int k) const {
+  return edge_tri_.data() + edge_tri_offsets_[triangle_edge_[std::size_t{3} * t + k]];
+}
+
+const std::uint32_t* Mesh::edge_triangles_end(std::uint32_t t, int k) const {
+  return edge_tri_.data() + edge_tri_offsets_[std::size_t{triangle_edge_[std::size_t{3} * t + k]} + 1];
+}
+
+}  // namespace prox

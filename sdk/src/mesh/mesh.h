@@ -1,0 +1,112 @@
+// Indexed triangle meshes with the topology the engine walks on.
+#pragma once
+
+#include "common/status.h"
+#include "geometry/types.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace prox {
+
+inline constexpr std::uint32_t kNoTriangle = 0xFFFFFFFFu;
+
+struct Aabb {
+  Vec3 min{0.0}, max{0.0};
+};
+
+// What building a mesh found in its input.
+struct MeshStats {
+  std::uint32_t input_vertices = 0;
+  std::uint32_t input_triangles = 0;
+  std::uint32_t vertices = 0;             // after welding identical positions
+  std::uint32_t triangles = 0;            // after dropping index-degenerate ones
+  std::uint32_t dropped_triangles = 0;    // repeated a vertex after welding: dropped
+  std::uint32_t zero_area_triangles = 0;  // distinct vertices but collinear: kept
+  std::uint32_t boundary_edges = 0;       // edges with one triangle
+  std::uint32_t nonmanifold_edges = 0;    // edges with three or more triangles
+};
+
+// Input to Mesh::build. Positions are x, y, z triples; each triangle is three
+// indices into them.
+struct MeshInput {
+  const double* positions = nullptr;
+  std::uint32_t vertex_count = 0;
+  const std::uint32_t* indices = nullptr;
+  std::uint32_t triangle_count = 0;
+};
+
+// An immutable mesh: vertices welded by exact position (glTF and OBJ split
+// vertices at UV and normal seams; adjacency must follow the surface), with
+// vertex -> triangles and edge -> triangles adjacency and face, edge and
+// vertex normals. Triangles keep the input's winding; normals point to the
+// side from which the triangle's vertices turn counter-clockwise.
+class Mesh {
+ public:
+  // Validates the input (non-empty, finite coordinates, indices in range) and
+  // builds the topology. On error `status` names the offending input and the
+  // returned mesh is empty.
+  static Mesh build(const MeshInput& input, Status& status);
+
+  std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(vertices_.size()); }
+  std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(triangles_.size()); }
+  bool empty() const { return triangles_.empty(); }
+
+  const Vec3& vertex(std::uint32_t v) const { return vertices_[v]; }
+  const std::array<std::uint32_t, 3>& indices(std::uint32_t t) const { return triangles_[t]; }
+  Triangle triangle(std::uint32_t t) const {
+    const auto& i = triangles_[t];
+    return {{vertices_[i[0]], vertices_[i[1]], vertices_[i[2]]}};
+  }
+  // The input triangle this triangle came from (dropped ones leave gaps).
+  std::uint32_t input_triangle(std::uint32_t t) const { return input_triangle_[t]; }
+
+  // Unit face normal; zero for a zero-area triangle.
+  const Vec3& face_normal(std::uint32_t t) const { return face_normals_[t]; }
+  // Unit vertex normal: the angle-weighted mean of the incident face normals
+  // (zero if they cancel or all incident triangles have zero area).
+  const Vec3& vertex_normal(std::uint32_t v) const { return vertex_normals_[v]; }
+  // Unit normal of edge k of triangle t: the mean of the normals of the
+  // triangles sharing the edge.
+  Vec3 edge_normal(std::uint32_t t, int k) const;
+
+  // Triangles incident to vertex v (its one-ring), ascending.
+  const std::uint32_t* vertex_triangles_begin(std::uint32_t v) const;
+  const std::uint32_t* vertex_triangles_end(std::uint32_t v) const;
+  // Triangles sharing edge k (vertex k to vertex k+1) of triangle t,
+  // including t, ascending: one on a boundary, two on a manifold edge.
+  const std::uint32_t* edge_triangles_begin(std::uint32_t t, int k) const;
+  const std::uint32_t* edge_triangles_end(std::uint32_t t, int k) const;
+
+  // Mesh-wide id of edge k of triangle t (the same for every triangle
+  // sharing the edge), in [0, edge_count()).
+  std::uint32_t edge_id(std::uint32_t t, int k) const {
+    return triangle_edge_[3 * t + static_cast<std::uint32_t>(k)];
+  }
+  std::uint32_t edge_count() const {
+    return edge_tri_offsets_.empty() ? 0u : static_cast<std::uint32_t>(edge_tri_offsets_.size() - 1);
+  }
+
+  const Aabb& bounds() const { return bounds_; }
+  const MeshStats& stats() const { return stats_; }
+  // The longest edge of the mesh; sizes relative tolerances.
+  double longest_edge() const { return longest_edge_; }
+
+ private:
+  std::vector<Vec3> vertices_;
+  std::vector<std::array<std::uint32_t, 3>> triangles_;
+  std::vector<std::uint32_t> input_triangle_;
+  std::vector<Vec3> face_normals_;
+  std::vector<Vec3> vertex_normals_;
+  // CSR adjacency: vertex -> triangles.
+  std::vector<std::uint32_t> vertex_tri_offsets_, vertex_tri_;
+  // Per triangle edge (3 t + k) -> an edge id; edge id -> triangles (CSR).
+  std::vector<std::uint32_t> triangle_edge_;
+  std::vector<std::uint32_t> edge_tri_offsets_, edge_tri_;
+  Aabb bounds_;
+  MeshStats stats_;
+  double longest_edge_ = 0.0;
+};
+
+}  // namespace prox

@@ -1,0 +1,177 @@
+#include "snch/snch.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+namespace prox {
+namespace {
+
+struct Sphere {
+  Vec3 center{0.0};
+  double radius = 0.0;
+};
+
+// The smallest sphere holding a triangle: around the longest edge when the
+// triangle is obtuse (or degenerate), else its circumsphere.
+Sphere triangle_sphere(const Triangle& t) {
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 &a = t.v[k], &b = t.v[(k + 1) % 3], &c = t.v[(k + 2) % 3];
+    // Angle at c is >= 90 degrees: the sphere on edge ab holds c.
+    if (glm::dot(a - c, b - c) <= 0.0) {
+      const Vec3 m = 0.5 * (a + b);
+      return {m, 0.5 * glm::length(b - a)};
+    }
+  }
+  const Vec3 a = t.v[1] - t.v[0], b = t.v[2] - t.v[0];
+  const Vec3 n = glm::cross(a, b);
+  const double nn = glm::dot(n, n);
+  const Vec3 offset = (glm::dot(a, a) * glm::cross(b, n) + glm::dot(b, b) * glm::cross(n, a)) / (2.0 * nn);
+  const Vec3 center = t.v[0] + offset;
+  // Rounding may leave a vertex a hair outside: take the farthest.
+  double r = 0.0;
+  for (const Vec3& v : t.v) r = std::max(r, glm::length(v - center));
+  return {center, r};
+}
+
+Sphere merge(const Sphere& a, const Sphere& b) {
+  const Vec3 d = b.center - a.center;
+  const double dist = glm::length(d);
+  if (dist + b.radius <= a.radius) return a;
+  if (dist + a.radius <= b.radius) return b;
+  const double r = 0.5 * (dist + a.radius + b.radius);
+  const Vec3 c = a.center + ((r - a.radius) / dist) * d;
+  return {c, r};
+}
+
+// True where the surface around vertex v is not a closed, consistently wound
+// sheet: a boundary or non-manifold edge, or two triangles that traverse a
+// shared edge the same way. There the directions in which a closest pair can
+// leave the surface are not bounded by the face normals.
+bool vertex_is_open(const Mesh& mesh, std::uint32_t v) {
+  for (const std::uint32_t* t = mesh.vertex_triangles_begin(v); t != mesh.vertex_triangles_end(v); ++t) {
+    const auto& idx = mesh.indices(*t);
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = idx[k], b = idx[(k + 1) % 3];
+      if (a != v && b != v) continue;
+      const std::uint32_t* begin = mesh.edge_triangles_begin(*t, k);
+      const std::uint32_t* end = mesh.edge_triangles_end(*t, k);
+      if (end - begin != 2) return true;
+      const std::uint32_t other = begin[0] == *t ? begin[1] : begin[0];
+      const auto& o = mesh.indices(other);
+      for (int j = 0; j < 3; ++j)
+        if (o[j] == a && o[(j + 1) % 3] == b) return true;  // same direction: folded
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+Cone Snch::leaf_cone(const Mesh& mesh, std::uint32_t t) {
+  // A local minimum can sit on the face, an edge or a vertex of t. The
+  // directions it can leave by are the face normal for the face, and lie in
+  // the cone spanned by the adjacent face normals for an edge or a convex
+  // vertex (the polar of the surface's tangent cone). So the leaf cone bounds
+  // the normals of every triangle sharing a vertex with t. When those
+  // normals spread past a hemisphere their cone is no longer convex and may
+  // miss directions in their span: then it holds everything.
+  const auto& idx = mesh.indices(t);
+  Vec3 sum(0.0);
+  for (std::uint32_t v : idx) {
+    if (vertex_is_open(mesh, v)) return Cone::everything();
+    for (const std::uint32_t* n = mesh.vertex_triangles_begin(v); n != mesh.vertex_triangles_end(v); ++n)
+      sum += mesh.face_normal(*n);
+  }
+  const double len = glm::length(sum);
+  if (!(len > 1e-12)) return Cone::everything();
+  const Vec3 axis = sum / len;
+  double half = 0.0;
+  for (std::uint32_t v : idx)
+    for (const std::uint32_t* n = mesh.vertex_triangles_begin(v); n != mesh.vertex_triangles_end(v); ++n) {
+      const Vec3& normal = mesh.face_normal(*n);
+      if (glm::dot(normal, normal) > 0.0) half = std::max(half, angle_between(axis, normal));
+    }
+  if (half >= 0.5 * kPi) return Cone::everything();
+  return {axis, half};
+}
+
+Snch::Snch(const Mesh& mesh) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::uint32_t n = mesh.triangle_count();
+  std::vector<Vec3> centroid(n);
+  for (std::uint32_t t = 0; t < n; ++t) {
+    const Triangle tri = mesh.triangle(t);
+    centroid[t] = (tri.v[0] + tri.v[1] + tri.v[2]) / 3.0;
+  }
+  std::vector<std::uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  nodes_.reserve(n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0);
+
+  struct Task {
+    std::uint32_t node, begin, end, depth;
+  };
+  std::vector<Task> stack;
+  if (n > 0) {
+    nodes_.emplace_back();
+    stack.push_back({0, 0, n, 0});
+  }
+  // Pre-order: children are created when a node is split, and their
+  // geometry is filled in once both are built (post-order pass below).
+  while (!stack.empty()) {
+    const Task task = stack.back();
+    stack.pop_back();
+    stats_.depth = std::max(stats_.depth, task.depth);
+    if (task.end - task.begin == 1) {
+      const std::uint32_t t = order[task.begin];
+      SnchNode& leaf = nodes_[task.node];
+      const Sphere s = triangle_sphere(mesh.triangle(t));
+      leaf.center = s.center;
+      leaf.radius = s.radius;
+      leaf.cone = leaf_cone(mesh, t);
+      leaf.first = t;
+      leaf.second = SnchNode::kLeaf;
+      ++stats_.leaves;
+      if (leaf.cone.unbounded()) ++stats_.unbounded_leaves;
+      continue;
+    }
+    Vec3 lo = centroid[order[task.begin]], hi = lo;
+    for (std::uint32_t i = task.begin; i < task.end; ++i)
+      lo = glm::min(lo, centroid[order[i]]), hi = glm::max(hi, centroid[order[i]]);
+    const Vec3 extent = hi - lo;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const std::uint32_t mid = task.begin + (task.end - task.begin) / 2;
+    // Ties broken by triangle index, so the split does not depend on how
+    // nth_element orders equal keys.
+    std::nth_element(order.begin() + task.begin, order.begin() + mid, order.begin() + task.end,
+                     [&](std::uint32_t a, std::uint32_t b) {
+                       return centroid[a][axis] < centroid[b][axis] ||
+                              (centroid[a][axis] == centroid[b][axis] && a < b);
+                     });
+    const auto first = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    nodes_.emplace_back();
+    nodes_[task.node].first = first;
+    nodes_[task.node].second = first + 1;
+    stack.push_back({first + 1, mid, task.end, task.depth + 1});
+    stack.push_back({first, task.begin, mid, task.depth + 1});
+  }
+  // Children always come after their parent: fill inner nodes bottom-up.
+  for (std::size_t i = nodes_.size(); i-- > 0;) {
+    SnchNode& node = nodes_[i];
+    if (node.is_leaf()) continue;
+    const SnchNode &a = nodes_[node.first], &b = nodes_[node.second];
+    const Sphere s = merge(Sphere{a.center, a.radius}, Sphere{b.center, b.radius});
+    node.center = s.center;
+    node.radius = s.radius;
+    node.cone = merge(a.cone, b.cone);
+  }
+  stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
+  stats_.memory_bytes = nodes_.capacity() * sizeof(SnchNode);
+  stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace prox

@@ -1,0 +1,58 @@
+// Spatialized Normal Cone Hierarchy (Johnson and Cohen 2001): a bounding
+// sphere tree over a mesh's triangles with a cone of normals at every node.
+#pragma once
+
+#include "mesh/mesh.h"
+#include "snch/cone.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace prox {
+
+struct SnchNode {
+  Vec3 center{0.0};  // bounding sphere of the node's triangles, mesh units
+  double radius = 0.0;
+  // Directions along which a local minimum distance pair can leave the
+  // surface of any triangle below this node (see docs/snch.md).
+  Cone cone;
+  // Inner node: children `first` and `second`. Leaf: `first` is the
+  // triangle, `second` is kLeaf.
+  std::uint32_t first = 0, second = 0;
+
+  static constexpr std::uint32_t kLeaf = 0xFFFFFFFFu;
+  bool is_leaf() const { return second == kLeaf; }
+};
+
+struct SnchStats {
+  std::uint32_t nodes = 0;
+  std::uint32_t leaves = 0;
+  std::uint32_t depth = 0;             // edges on the longest root-to-leaf path
+  std::uint32_t unbounded_leaves = 0;  // leaves whose cone holds every direction
+  double build_seconds = 0.0;
+  std::size_t memory_bytes = 0;
+};
+
+// Built once per mesh, top-down: each node's triangles are split at the median
+// of their centroids along the widest axis of the centroids' box. Deterministic:
+// the same mesh gives the same tree on every run and platform.
+class Snch {
+ public:
+  explicit Snch(const Mesh& mesh);
+
+  const std::vector<SnchNode>& nodes() const { return nodes_; }
+  const SnchNode& root() const { return nodes_[0]; }
+  const SnchNode& node(std::uint32_t i) const { return nodes_[i]; }
+  const SnchStats& stats() const { return stats_; }
+
+  // The leaf cone of triangle t (also stored in its leaf): it bounds the
+  // normals of every triangle sharing a vertex with t, or holds every
+  // direction where the surface is open or folded there.
+  static Cone leaf_cone(const Mesh& mesh, std::uint32_t t);
+
+ private:
+  std::vector<SnchNode> nodes_;
+  SnchStats stats_;
+};
+
+}  // namespace prox

@@ -1,0 +1,154 @@
+// The engine against the brute-force reference: bunny against bunny at 200
+// seeded random close poses.
+#include "support/scenes.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+namespace prox::testing {
+namespace {
+
+constexpr double kCutoff = 0.005;  // 5 mm on a 0.155 m bunny
+constexpr int kPoses = 200;
+
+std::shared_ptr<const Model> bunny() {
+  static const std::shared_ptr<const Model> model = load_obj_model("bunny.obj");
+  return model;
+}
+
+// Gaps from a tenth of a millimetre to the cutoff, log-uniform.
+double random_gap(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(std::log(1e-4), std::log(kCutoff));
+  return std::exp(u(rng));
+}
+
+std::vector<LmdPair> within(const std::vector<LmdPair>& lmds, double cutoff) {
+  std::vector<LmdPair> out;
+  for (const LmdPair& p : lmds)
+    if (p.distance <= cutoff) out.push_back(p);
+  return out;
+}
+
+TEST(Accuracy, PreciseMatchesTheReferenceOnBunnyPairs) {
+  const auto model = bunny();
+  ASSERT_TRUE(model);
+  const double tolerance = 1e-9 * model->size;
+  std::mt19937_64 rng(1);
+  PairState state;
+  Match precise, original, original_loose;
+  long candidates = 0;
+  int poses_with_contacts = 0;
+  double precise_error = 0.0, original_error = 0.0;  // of the minimum distance, over the model size
+  for (int i = 0; i < kPoses; ++i) {
+    const double gap = random_gap(rng);
+    const Pose pose = pose_at_gap(*model, *model, gap, rng);
+    const PairQuery q = make_query(*model, Pose{}, *model, pose, kCutoff);
+    ProximityResult ref, fast, base;
+    find_lmds(q, Method::Reference, state, ref);
+    find_lmds(q, Method::Precise, state, fast);
+    find_lmds(q, Method::Original, state, base);
+
+    // The pose generator put the meshes `gap` apart, so the reference's
+    // closest LMD is that far: two exact computations agree.
+    ASSERT_FALSE(ref.lmds.empty()) << "pose " << i;
+    EXPECT_NEAR(ref.min_distance, gap, 1e-9 * model->size) << "pose " << i;
+    EXPECT_NEAR(fast.min_distance, ref.min_distance, 1e-9 * model->size) << "pose " << i;
+    EXPECT_GE(fast.candidates, fast.lmds.size());
+    precise_error = std::max(precise_error, std::abs(fast.min_distance - ref.min_distance) / model->size);
+    if (base.min_distance >= 0.0)
+      original_error = std::max(original_error, std::abs(base.min_distance - ref.min_distance) / model->size);
+    candidates += fast.candidates;
+    ++poses_with_contacts;
+
+    const Match m = match_lmds(ref.lmds, fast.lmds, tolerance);
+    precise.reference += m.reference, precise.found += m.found;
+    precise.recalled += m.recalled, precise.confirmed += m.confirmed;
+    // The baseline's points are feature points, not closest points: match
+    // them exactly and within 2 mm, and record both.
+    const Match o = match_lmds(ref.lmds, base.lmds, tolerance);
+    const Match ol = match_lmds(ref.lmds, base.lmds, 0.002);
+    original.reference += o.reference, original.found += o.found;
+    original.recalled += o.recalled, original.confirmed += o.confirmed;
+    original_loose.reference += ol.reference, original_loose.found += ol.found;
+    original_loose.recalled += ol.recalled, original_loose.confirmed += ol.confirmed;
+  }
+  const double recall = double(precise.recalled) / precise.reference;
+  const double precision = double(precise.confirmed) / precise.found;
+  std::printf("[ accuracy ] %d poses, %d reference LMDs, %ld precise candidates before reduction\n",
+              poses_with_contacts, precise.reference, candidates);
+  std::printf(
+      "[ accuracy ] precise:  recall %.4f precision %.4f (%d found), max min-distance error %.2e of the "
+      "size\n",
+      recall, precision, precise.found, precise_error);
+  std::printf("[ accuracy ] original: max min-distance error %.2e of the size\n", original_error);
+  std::printf(
+      "[ accuracy ] original: recall %.4f precision %.4f (%d found); within 2 mm: recall %.4f precision "
+      "%.4f\n",
+      double(original.recalled) / original.reference,
+      double(original.confirmed) / std::max(1, original.found), original.found,
+      double(original_loose.recalled) / original_loose.reference,
+      double(original_loose.confirmed) / std::max(1, original_loose.found));
+  EXPECT_GE(recall, 0.995);
+  EXPECT_GE(precision, 0.995);
+  RecordProperty("precise_recall", std::to_string(recall));
+  RecordProperty("precise_precision", std::to_string(precision));
+}
+
+TEST(Accuracy, LocalTrackingFollowsASmallMotion) {
+  const auto model = bunny();
+  ASSERT_TRUE(model);
+  const double tolerance = 1e-9 * model->size;
+  // Tracked sets carry a margin beyond the cutoff, as the runtime does, so
+  // that a pair entering the cutoff is already being tracked.
+  const double margin = 0.001;
+  std::mt19937_64 rng(2);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  PairState state;
+  Match total;
+  int births = 0;
+  for (int i = 0; i < 100; ++i) {
+    const double gap = 0.0005 + random_gap(rng);
+    const Pose before = pose_at_gap(*model, *model, gap, rng);
+    ProximityResult start;
+    find_lmds(make_query(*model, Pose{}, *model, before, kCutoff + margin), Method::Precise, state, start);
+
+    // One local update's worth of motion: 10 um and 0.01 degree about b's
+    // centre, a hand moving at 1 cm/s seen by a 1 kHz tracker.
+    const Vec3 axis = glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3));
+    const Pose turn{glm::mat3_cast(glm::angleAxis(0.01 * kPi / 180.0, axis)), Vec3(0.0)};
+    const Vec3 c = before.apply(model->centre);
+    Pose after = Pose{glm::dmat3(1.0), c + 1e-5 * glm::normalize(Vec3(u(rng), u(rng), u(rng)) + Vec3(1e-3))} *
+                 turn * Pose{glm::dmat3(1.0), -c} * before;
+    const PairQuery q = make_query(*model, Pose{}, *model, after, kCutoff + margin);
+    LocalTrackingStats stats;
+    std::vector<LmdPair> tracked = start.lmds;
+    state.precise.update(q, tracked, stats);
+
+    ProximityResult ref;
+    find_lmds(make_query(*model, Pose{}, *model, after, kCutoff), Method::Reference, state, ref);
+    const Match m = match_lmds(ref.lmds, within(tracked, kCutoff), tolerance);
+    total.reference += m.reference, total.found += m.found;
+    total.recalled += m.recalled, total.confirmed += m.confirmed;
+    // Tracking cannot create an LMD: a new local minimum (a "birth") is the
+    // global search's to find, and the next one must.
+    if (m.recalled < m.reference) {
+      ProximityResult fresh;
+      find_lmds(make_query(*model, Pose{}, *model, after, kCutoff), Method::Precise, state, fresh);
+      EXPECT_EQ(match_lmds(ref.lmds, fresh.lmds, tolerance).recalled, m.reference) << "pose " << i;
+      births += m.reference - m.recalled;
+    }
+  }
+  const double recall = double(total.recalled) / total.reference;
+  const double precision = double(total.confirmed) / total.found;
+  std::printf("[ tracking ] %d reference LMDs after the motion: recall %.4f precision %.4f, %d births\n",
+              total.reference, recall, precision, births);
+  EXPECT_GT(total.reference, 100);
+  EXPECT_GE(recall, 0.995);
+  EXPECT_GE(precision, 0.995);
+}
+
+}  // namespace
+}  // namespace prox::testing

@@ -1,0 +1,83 @@
+#include "support/scenes.h"
+
+#include "io/obj.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+namespace prox::testing {
+
+std::string asset_path(const std::string& relative) {
+  return std::string(PROX_SHARED_ASSETS_DIR) + "/" + relative;
+}
+
+std::shared_ptr<const Model> model_from_arrays(const std::vector<double>& positions,
+                                               const std::vector<std::uint32_t>& indices) {
+  MeshInput input{positions.data(), static_cast<std::uint32_t>(positions.size() / 3), indices.data(),
+                  static_cast<std::uint32_t>(indices.size() / 3)};
+  Status status;
+  auto model = std::make_shared<Model>();
+  model->mesh = Mesh::build(input, status);
+  EXPECT_TRUE(status.is_ok()) << status.message();
+  if (!status.is_ok()) return nullptr;
+  model->snch = std::make_unique<Snch>(model->mesh);
+  model->size = glm::length(model->mesh.bounds().max - model->mesh.bounds().min);
+  model->centre = 0.5 * (model->mesh.bounds().max + model->mesh.bounds().min);
+  return model;
+}
+
+std::shared_ptr<const Model> load_obj_model(const std::string& relative) {
+  io::ObjData obj;
+  const Status status = io::read_obj(asset_path(relative), obj);
+  EXPECT_TRUE(status.is_ok()) << status.message() << " (the shared assets must sit beside the repository)";
+  if (!status.is_ok()) return nullptr;
+  return model_from_arrays(obj.positions, obj.indices);
+}
+
+PairQuery make_query(const Model& a, const Pose& pose_a, const Model& b, const Pose& pose_b, double cutoff) {
+  return {&a.mesh, a.snch.get(), pose_a, &b.mesh, b.snch.get(), pose_b, cutoff};
+}
+
+Pose pose_at_gap(const Model& a, const Model& b, double gap, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Pose pose = Pose::from_quaternion(Vec3(0.0), u(rng), u(rng), u(rng), u(rng));
+  Vec3 dir;
+  do dir = Vec3(u(rng), u(rng), u(rng));
+  while (glm::dot(dir, dir) > 1.0 || glm::dot(dir, dir) < 1e-4);
+  dir = glm::normalize(dir);
+  // b's centre on a's centre, then out along dir: from overlapping (lo) to
+  // well apart (hi).
+  const Vec3 base = a.centre - pose.rotation * b.centre;
+  double lo = 0.0, hi = a.size + b.size + gap;
+  for (int i = 0; i < 60 && hi - lo > 1e-10 * a.size; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    pose.translation = base + mid * dir;
+    (any_closer_than(make_query(a, Pose{}, b, pose, 0.0), gap) ? lo : hi) = mid;
+  }
+  pose.translation = base + hi * dir;
+  return pose;
+}
+
+Match match_lmds(const std::vector<LmdPair>& reference, const std::vector<LmdPair>& found, double tolerance) {
+  auto same = [tolerance](const LmdPair& x, const LmdPair& y) {
+    return glm::length(x.point_a - y.point_a) <= tolerance && glm::length(x.point_b - y.point_b) <= tolerance;
+  };
+  Match m;
+  m.reference = static_cast<int>(reference.size());
+  m.found = static_cast<int>(found.size());
+  for (const LmdPair& r : reference)
+    for (const LmdPair& f : found)
+      if (same(r, f)) {
+        ++m.recalled;
+        break;
+      }
+  for (const LmdPair& f : found)
+    for (const LmdPair& r : reference)
+      if (same(r, f)) {
+        ++m.confirmed;
+        break;
+      }
+  return m;
+}
+
+}  // namespace prox::testing
