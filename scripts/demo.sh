@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
-# Proxima's main job on its built-in default. For now (the engine lands next)
-# that is the numerical stress report of the exact triangle kernel: seeded
-# triangle pairs in every hard family, checked against a quad-precision
-# reference. Works on a fresh Debian 12 machine; installs what it needs.
+# Proxima's main job on its built-in default: the paper's bunny-against-bunny
+# scene (section 6.1). The held bunny approaches the fixed one along +x from
+# 50 mm to 0.5 mm (path T of docs/cli.md), one deterministic step per pose,
+# with the precise method and the original Johnson-Cohen baseline side by
+# side: LMD counts, forces, force jumps and timings, and a CSV per step.
+# Extra arguments go to `proxima path` (e.g. --steps 200 --force soft).
+# Works on a fresh Debian 12 machine; installs what it needs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/deps.sh
 need_packages "${CORE_PACKAGES[@]}"
 
 cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build/release --target proxima_stress_report -j "$(nproc)"
-build/release/tests/proxima_stress_report "$@"
+cmake --build build/release --target proxima -j "$(nproc)"
+build/release/samples/cli/proxima path --csv build/proxima-path.csv "$@"

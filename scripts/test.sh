@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/deps.sh
-need_packages "${CORE_PACKAGES[@]}" libbenchmark-dev
+need_packages "${CORE_PACKAGES[@]}" libbenchmark-dev python3
 
 jobs=$(nproc)
 configure() {  # configure DIR [cmake args...]

@@ -1,5 +1,7 @@
 #include "contact/global_search.h"
 
+#include "contact/descent.h"
+
 #include "geometry/sampled_distance.h"
 #include "geometry/triangle_distance.h"
 #include "geometry/visibility.h"
@@ -27,104 +29,9 @@ MeshFeature mesh_feature(const Mesh& mesh, std::uint32_t triangle, Feature f) {
 
 namespace {
 
-// The search runs in A's local frame; B's nodes and triangles are moved into
-// it on the fly.
-struct Frames {
-  Pose b_to_a;
-  explicit Frames(const PairQuery& q) : b_to_a(q.pose_a.inverse() * q.pose_b) {}
-};
-
-struct NodePair {
-  const SnchNode& a;
-  Vec3 center_b;  // in A's frame
-  double radius_b;
-  Vec3 axis_b;  // in A's frame
-  double half_b;
-  bool cone_b_unbounded;
-};
-
-enum class Verdict { Pass, G1, G2, G3 };
-
-double center_distance(const NodePair& p) { return glm::length(p.center_b - p.a.center); }
-
-bool g1_rejects(const NodePair& p, double cutoff) {
-  return center_distance(p) - p.a.radius - p.radius_b > cutoff;
-}
-
-// G2: a local minimum needs a normal of A and a normal of B pointing at each
-// other; no such pair exists when the angle between A's axis and the reverse
-// of B's exceeds both half-angles together.
-bool g2_rejects(const NodePair& p) {
-  if (p.a.cone.unbounded() || p.cone_b_unbounded) return false;
-  const double opposite = kPi - angle_between(p.a.cone.axis, p.axis_b);
-  return opposite > p.a.cone.half_angle + p.half_b;
-}
-
-// G3.a / G3.b: every line from sphere A to sphere B lies within sigma of the
-// line between the centres; A's cone must reach that cone of lines, and B's
-// must reach its reverse.
-bool g3_rejects(const NodePair& p) {
-  const Vec3 between = p.center_b - p.a.center;
-  const double dist = glm::length(between);
-  const double reach = p.a.radius + p.radius_b;
-  if (!(dist > reach)) return false;  // overlapping spheres: lines go everywhere
-  const double sigma = std::asin(reach / dist);
-  const Vec3 dir = between / dist;
-  if (!p.a.cone.unbounded() && angle_between(dir, p.a.cone.axis) > sigma + p.a.cone.half_angle) return true;
-  if (!p.cone_b_unbounded && angle_between(-dir, p.axis_b) > sigma + p.half_b) return true;
-  return false;
-}
-
-// Simultaneous descent of both trees; `use_cones` switches G2/G3 on; `leaf`
-// is called for every leaf pair that passes.
-template <typename Leaf>
-void descend(const PairQuery& q, const Frames& frames, bool use_cones, GlobalSearchStats& stats, Leaf leaf) {
-  const Snch& ta = *q.snch_a;
-  const Snch& tb = *q.snch_b;
-  if (ta.nodes().empty() || tb.nodes().empty()) return;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> stack;
-  stack.reserve(256);
-  stack.emplace_back(0u, 0u);
-  while (!stack.empty()) {
-    const auto [ia, ib] = stack.back();
-    stack.pop_back();
-    ++stats.node_pairs;
-    const SnchNode& na = ta.node(ia);
-    const SnchNode& nb = tb.node(ib);
-    const NodePair p{na,
-                     frames.b_to_a.apply(nb.center),
-                     nb.radius,
-                     frames.b_to_a.rotate(nb.cone.axis),
-                     nb.cone.half_angle,
-                     nb.cone.unbounded()};
-    if (g1_rejects(p, q.cutoff)) {
-      ++stats.rejected_g1;
-      continue;
-    }
-    if (use_cones && g2_rejects(p)) {
-      ++stats.rejected_g2;
-      continue;
-    }
-    if (use_cones && g3_rejects(p)) {
-      ++stats.rejected_g3;
-      continue;
-    }
-    if (na.is_leaf() && nb.is_leaf()) {
-      ++stats.leaf_pairs;
-      leaf(na.first, nb.first);
-    } else if (nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius)) {
-      stack.emplace_back(na.second, ib);
-      stack.emplace_back(na.first, ib);
-    } else {
-      stack.emplace_back(ia, nb.second);
-      stack.emplace_back(ia, nb.first);
-    }
-  }
-}
-
-Triangle moved(const Triangle& t, const Pose& pose) {
-  return {{pose.apply(t.v[0]), pose.apply(t.v[1]), pose.apply(t.v[2])}};
-}
+using detail::descend;
+using detail::Frames;
+using detail::moved;
 
 LmdPair make_pair(const PairQuery& q, std::uint32_t ta, std::uint32_t tb, const Vec3& pa_local_a,
                   const Vec3& pb_local_a, double distance, Feature fa, Feature fb) {

@@ -352,4 +352,22 @@ TriangleIntersection intersect_triangles(const Triangle& a, const Triangle& b) {
   return r;
 }
 
+bool segment_crosses_triangle(const Vec3& p_in, const Vec3& q_in, const Triangle& t, Vec3& point) {
+  if (degenerate(t)) return false;
+  // A canonical direction (lexicographic), so that (p, q) and (q, p) run the
+  // same arithmetic.
+  const bool swap =
+      q_in.x < p_in.x || (q_in.x == p_in.x && (q_in.y < p_in.y || (q_in.y == p_in.y && q_in.z < p_in.z)));
+  const Vec3& p = swap ? q_in : p_in;
+  const Vec3& q = swap ? p_in : q_in;
+  const int sp = orient3d(t.v[0], t.v[1], t.v[2], p);
+  const int sq = orient3d(t.v[0], t.v[1], t.v[2], q);
+  if (sp == 0 && sq == 0) return false;
+  if (!segment_triangle(p, q, sp, sq, t, false)) return false;
+  PointSet one;
+  add_segment_triangle_points(p, q, sp, sq, t, false, one);
+  point = one.p[0];
+  return true;
+}
+
 }  // namespace prox::geometry

@@ -29,4 +29,12 @@ struct TriangleIntersection {
 // accurate to a few ulps of the triangles' size.
 TriangleIntersection intersect_triangles(const Triangle& a, const Triangle& b);
 
+// Where segment [p, q] crosses triangle t, for segments not lying in t's
+// plane: false when they do not meet (an exact verdict), else true and the
+// crossing point. The point does not depend on the segment's direction, so
+// the two triangles sharing an edge get bit-identical crossings of it, which
+// is what lets intersection segments chain into polylines. Degenerate
+// triangles and segments in t's plane report no crossing.
+bool segment_crosses_triangle(const Vec3& p, const Vec3& q, const Triangle& t, Vec3& point);
+
 }  // namespace prox::geometry

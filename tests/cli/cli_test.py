@@ -1,0 +1,162 @@
+"""Tests of the proxima command-line tool, run by ctest:
+
+    python3 cli_test.py PATH_TO_PROXIMA
+
+Every expected value is worked out by hand from the scene written here.
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+PROXIMA = None
+
+
+def run(*args, cwd=None):
+    return subprocess.run([PROXIMA, *args], capture_output=True, text=True, cwd=cwd, timeout=300)
+
+
+def write(directory, name, text):
+    path = os.path.join(directory, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+class CliTest(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.TemporaryDirectory()
+        d = self.dir.name
+        # A: the unit right triangle in z = 0 (normal +z).
+        self.tri = write(d, "tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+        # A unit square of two triangles, for the info counts.
+        self.square = write(d, "square.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n")
+
+    def tearDown(self):
+        self.dir.cleanup()
+
+    def test_info_counts_a_square(self):
+        r = run("info", self.square)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertRegex(r.stdout, r"triangles\s+2 ")
+        self.assertRegex(r.stdout, r"vertices\s+4 welded")
+        self.assertRegex(r.stdout, r"boundary edges\s+4\b")
+
+    def test_lmd_between_single_triangles(self):
+        # B is A turned over (180 degrees about x: normal -z, facing A),
+        # shifted by (0.1, 0.1) and lifted 1 mm: two parallel faces that
+        # overlap, 1 mm apart.
+        json_path = os.path.join(self.dir.name, "out.json")
+        r = run("lmd", self.tri, self.tri, "--pose-b", "0.1", "0.1", "0.001", "0", "1", "0", "0",
+                "--cutoff", "0.005", "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(json_path) as f:
+            out = json.load(f)
+        self.assertAlmostEqual(out["min_distance"], 0.001, delta=1e-12)
+        self.assertEqual(len(out["lmds"]), 1)
+        lmd = out["lmds"][0]
+        self.assertAlmostEqual(lmd["distance"], 0.001, delta=1e-12)
+        self.assertAlmostEqual(lmd["point_b"][2] - lmd["point_a"][2], 0.001, delta=1e-12)
+        self.assertEqual((lmd["feature_a"], lmd["feature_b"]), ("face", "face"))
+        # B is above A, so the force pushes B up (+z) and is within the clip.
+        fx, fy, fz = out["force"]
+        self.assertGreater(fz, 0.0)
+        self.assertAlmostEqual(fx, 0.0, delta=1e-12)
+        self.assertLessEqual(math.sqrt(fx * fx + fy * fy + fz * fz), 3.0 + 1e-12)
+        for key in ("candidates", "node_pairs", "leaf_pairs", "global_ms"):
+            self.assertIn(key, out["stats"])
+
+    def test_lmd_reports_nothing_beyond_the_cutoff(self):
+        json_path = os.path.join(self.dir.name, "far.json")
+        r = run("lmd", self.tri, self.tri, "--pose-b", "0", "0", "0.01", "1", "0", "0", "0",
+                "--cutoff", "0.005", "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(json_path) as f:
+            out = json.load(f)
+        self.assertEqual(out["lmds"], [])
+        self.assertEqual(out["min_distance"], -1)
+        self.assertEqual(out["force"], [0, 0, 0])
+
+    def test_all_methods_agree_on_a_vertex_over_a_face(self):
+        # B's vertex 0 sits 2 mm above A's interior point (0.25, 0.25) and B
+        # rises from there, wound to face A: the only LMD is B's vertex over
+        # A's face at 2 mm. The original's 7 x 7 sampling can only pair that
+        # vertex with A's centroid or corners, so it reports more than 2 mm.
+        b = write(self.dir.name, "b.obj", "v 0.25 0.25 0.002\nv 1 0.5 1\nv 0.5 1 1\nf 1 3 2\n")
+        results = {}
+        for method in ("precise", "reference", "original"):
+            json_path = os.path.join(self.dir.name, method + ".json")
+            r = run("lmd", self.tri, b, "--method", method, "--cutoff", "0.5", "--json", json_path)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(json_path) as f:
+                results[method] = json.load(f)
+        self.assertAlmostEqual(results["precise"]["min_distance"], 0.002, delta=1e-12)
+        self.assertAlmostEqual(results["reference"]["min_distance"], 0.002, delta=1e-12)
+        self.assertEqual(results["precise"]["lmds"][0]["feature_b"], "vertex")
+        self.assertEqual(results["precise"]["lmds"][0]["feature_a"], "face")
+        # The sampled distance can only be larger than the exact one.
+        self.assertGreater(results["original"]["min_distance"], 0.002)
+
+    def test_polylines_of_two_crossing_triangles(self):
+        # B: a triangle in the plane x = 0.25 crossing A's face along
+        # x = 0.25, y in [0, 0.75]: one open polyline of length 0.75.
+        b = write(self.dir.name, "wall.obj", "v 0.25 -1 -1\nv 0.25 -1 1\nv 0.25 3 0\nf 1 2 3\n")
+        json_path = os.path.join(self.dir.name, "lines.json")
+        r = run("polylines", self.tri, b, "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(json_path) as f:
+            out = json.load(f)
+        self.assertEqual(len(out["polylines"]), 1)
+        line = out["polylines"][0]
+        self.assertFalse(line["closed"])
+        self.assertAlmostEqual(out["total_length"], 0.75, delta=1e-12)
+        for x, y, z in line["points"]:
+            self.assertAlmostEqual(x, 0.25, delta=1e-15)
+            self.assertAlmostEqual(z, 0.0, delta=1e-15)
+
+    def test_path_writes_a_csv_per_step(self):
+        csv = os.path.join(self.dir.name, "path.csv")
+        r = run("path", "--steps", "20", "--csv", csv)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(csv) as f:
+            lines = f.read().splitlines()
+        self.assertTrue(lines[0].startswith("step,method,x,min_distance"))
+        self.assertEqual(len(lines), 1 + 2 * 20)  # both methods
+        last_precise = [l for l in lines if ",precise," in l][-1].split(",")
+        # The last pose is 0.5 mm from contact.
+        self.assertAlmostEqual(float(last_precise[3]), 0.0005, delta=1e-9)
+        self.assertIn("precise", r.stdout)
+        self.assertIn("original", r.stdout)
+
+    def test_errors_are_clear_and_exit_non_zero(self):
+        cases = [
+            (("info", os.path.join(self.dir.name, "missing.obj")), "missing.obj"),
+            (("info", write(self.dir.name, "nan.obj", "v 0 0 nan\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")), "nan.obj"),
+            (("info", write(self.dir.name, "bad.obj", "v 0 0 0\nf 1 2 3\n")), "bad.obj:2"),
+            (("info", write(self.dir.name, "x.stl", "solid")), "unsupported file type"),
+            (("lmd", self.tri, self.tri, "--pose-b", "0", "0", "x", "1", "0", "0", "0"), "--pose-b"),
+            (("lmd", self.tri, self.tri, "--pose-b", "0", "0", "0", "0", "0", "0", "0"), "quaternion"),
+            (("lmd", self.tri, self.tri, "--pose-b", "0", "0", "inf", "1", "0", "0", "0"), "not finite"),
+            (("lmd", self.tri, self.tri, "--pose-a", "1", "2"), "missing"),
+            (("lmd", self.tri, self.tri, "--cutoff", "-1"), "--cutoff"),
+            (("lmd", self.tri, self.tri, "--method", "magic"), "--method"),
+            (("lmd", self.tri), "missing mesh B"),
+            (("path", "--steps", "1"), "--steps"),
+        ]
+        for args, expected in cases:
+            with self.subTest(args=args):
+                r = run(*args)
+                self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+                self.assertIn(expected, r.stderr)
+                self.assertTrue(r.stderr.startswith("proxima: "), r.stderr)
+        r = run("frobnicate")
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("usage", r.stderr)
+
+
+if __name__ == "__main__":
+    PROXIMA = os.path.abspath(sys.argv.pop(1))
+    unittest.main()
