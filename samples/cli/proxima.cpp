@@ -4,7 +4,8 @@
 //   proxima lmd A B [--pose-a tx ty tz qw qx qy qz] [--pose-b ...] [--cutoff D]
 //                   [--method precise|original|reference] [--force hard|soft] [--json FILE]
 //   proxima polylines A B [--pose-a ...] [--pose-b ...] [--json FILE]
-//   proxima path [A B] [--steps N] [--method precise|original|both] [--force hard|soft] [--csv FILE]
+//   proxima path [A B] [--poses FILE | --steps N] [--method precise|original|both] [--force hard|soft]
+//                [--csv FILE]
 //
 // Poses are world poses of the meshes as loaded (quaternion w first); lengths
 // are in the meshes' units (metres for the shared assets). docs/cli.md has
@@ -38,7 +39,8 @@ const char* kUsage =
     "  proxima lmd A B [--pose-a tx ty tz qw qx qy qz] [--pose-b tx ty tz qw qx qy qz]\n"
     "                  [--cutoff D] [--method precise|original|reference] [--force hard|soft] [--json FILE]\n"
     "  proxima polylines A B [--pose-a tx ty tz qw qx qy qz] [--pose-b ...] [--json FILE]\n"
-    "  proxima path [A B] [--steps N] [--method precise|original|both] [--force hard|soft] [--csv FILE]\n"
+    "  proxima path [A B] [--poses FILE | --steps N] [--method precise|original|both] [--force hard|soft]\n"
+    "               [--csv FILE]\n"
     "  proxima --version\n";
 
 // Thrown for anything the user got wrong; main prints it and exits 1.
@@ -362,9 +364,53 @@ double x_at_gap(const Model& a, const Model& b, double gap) {
   return hi;
 }
 
+// A poses file: one pose of B per line, "tx ty tz qw qx qy qz"; blank lines
+// and lines starting with # are skipped.
+std::vector<Pose> read_poses(const std::string& path) {
+  FILE* f = std::fopen(path.c_str(), "r");
+  if (!f) fail(path + ": cannot read");
+  std::vector<Pose> poses;
+  char line[1024];
+  int number = 0;
+  while (std::fgets(line, sizeof line, f)) {
+    ++number;
+    std::string text(line);
+    const auto first = text.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos || text[first] == '#') continue;
+    double v[7];
+    int read = 0;
+    const char* at = text.c_str();
+    for (; read < 7; ++read) {
+      char* end = nullptr;
+      v[read] = std::strtod(at, &end);
+      if (end == at) break;
+      at = end;
+    }
+    const std::string where = path + ":" + std::to_string(number);
+    if (read != 7 || std::string(at).find_first_not_of(" \t\r\n") != std::string::npos) {
+      std::fclose(f);
+      fail(where + ": expected 7 numbers: tx ty tz qw qx qy qz");
+    }
+    for (double x : v)
+      if (!std::isfinite(x)) {
+        std::fclose(f);
+        fail(where + ": a number is not finite");
+      }
+    if (v[3] == 0.0 && v[4] == 0.0 && v[5] == 0.0 && v[6] == 0.0) {
+      std::fclose(f);
+      fail(where + ": the quaternion is zero");
+    }
+    poses.push_back(Pose::from_quaternion(Vec3(v[0], v[1], v[2]), v[3], v[4], v[5], v[6]));
+  }
+  std::fclose(f);
+  if (poses.size() < 2) fail(path + ": a path needs at least 2 poses");
+  return poses;
+}
+
 int path(Args& args) {
   std::string path_a = default_asset("bunny.obj"), path_b;
   int steps = 1000;
+  std::string poses_path;
   std::vector<Method> methods = {Method::Precise, Method::Original};
   ForceSettings force = hard_force_settings();
   std::string csv_path = "proxima-path.csv";
@@ -386,6 +432,8 @@ int path(Args& args) {
       force = parse_force(args.next("--force value"));
     } else if (opt == "--csv") {
       csv_path = args.next("--csv file");
+    } else if (opt == "--poses") {
+      poses_path = args.next("--poses file");
     } else {
       fail("path: unknown option '" + opt + "'");
     }
@@ -393,23 +441,32 @@ int path(Args& args) {
   const auto a = load(path_a);
   const auto b = path_b.empty() || path_b == path_a ? a : load(path_b);
   const double cutoff = force.cutoff;
-  const double far = 0.05, near = 0.0005;
-  const double x0 = x_at_gap(*a, *b, far), x1 = x_at_gap(*a, *b, near);
-  std::printf(
-      "path T: %s held and moved along +x against %s, %d poses from %.3g m to %.3g m apart "
-      "(x %.6g .. %.6g), cutoff %.3g m\n",
-      b->path.c_str(), a->path.c_str(), steps, far, near, x0, x1, cutoff);
+  std::vector<Pose> poses;
+  if (!poses_path.empty()) {
+    poses = read_poses(poses_path);
+    std::printf("path from %s: %zu poses of %s against %s, cutoff %.3g m\n", poses_path.c_str(), poses.size(),
+                b->path.c_str(), a->path.c_str(), cutoff);
+  } else {
+    const double far = 0.05, near = 0.0005;
+    const double x0 = x_at_gap(*a, *b, far), x1 = x_at_gap(*a, *b, near);
+    for (int i = 0; i < steps; ++i)
+      poses.push_back({glm::dmat3(1.0), Vec3(x0 + (x1 - x0) * i / (steps - 1), 0, 0)});
+    std::printf(
+        "path T: %s held and moved along +x against %s, %d poses from %.3g m to %.3g m apart "
+        "(x %.6g .. %.6g), cutoff %.3g m\n",
+        b->path.c_str(), a->path.c_str(), steps, far, near, x0, x1, cutoff);
+  }
 
   std::vector<Step> rows;
   for (const Method method : methods) {
     PairState state;
     std::vector<LmdPair> tracked;
-    for (int i = 0; i < steps; ++i) {
+    for (std::size_t i = 0; i < poses.size(); ++i) {
       Step s;
-      s.index = i;
+      s.index = static_cast<int>(i);
       s.method = method;
-      s.x = x0 + (x1 - x0) * i / (steps - 1);
-      const Pose pb{glm::dmat3(1.0), Vec3(s.x, 0.0, 0.0)};
+      const Pose& pb = poses[i];
+      s.x = pb.translation.x;
       const PairQuery q{&a->mesh, a->snch.get(), Pose{}, &b->mesh, b->snch.get(), pb, cutoff};
       // What the local thread does between global searches: carry the last
       // set to the new pose.

@@ -131,6 +131,20 @@ class CliTest(unittest.TestCase):
         self.assertIn("precise", r.stdout)
         self.assertIn("original", r.stdout)
 
+    def test_path_from_a_poses_file(self):
+        # B (the triangle turned to face A) descends onto A: 3, 2 then 1 mm.
+        poses = write(self.dir.name, "poses.txt",
+                      "# tx ty tz qw qx qy qz\n0.1 0.1 0.003 0 1 0 0\n\n0.1 0.1 0.002 0 1 0 0\n0.1 0.1 0.001 0 1 0 0\n")
+        csv = os.path.join(self.dir.name, "p.csv")
+        r = run("path", self.tri, self.tri, "--poses", poses, "--method", "precise", "--csv", csv)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(csv) as f:
+            rows = [l.split(",") for l in f.read().splitlines()[1:]]
+        self.assertEqual([round(float(row[3]), 12) for row in rows], [0.003, 0.002, 0.001])
+        forces = [float(row[9]) for row in rows]
+        self.assertLess(forces[0], forces[1])
+        self.assertLess(forces[1], forces[2])
+
     def test_errors_are_clear_and_exit_non_zero(self):
         cases = [
             (("info", os.path.join(self.dir.name, "missing.obj")), "missing.obj"),
@@ -145,6 +159,9 @@ class CliTest(unittest.TestCase):
             (("lmd", self.tri, self.tri, "--method", "magic"), "--method"),
             (("lmd", self.tri), "missing mesh B"),
             (("path", "--steps", "1"), "--steps"),
+            (("path", self.tri, self.tri, "--poses", write(self.dir.name, "bad.txt", "0 0 0 1 0 0\n")), "bad.txt:1"),
+            (("path", self.tri, self.tri, "--poses", write(self.dir.name, "one.txt", "0 0 0 1 0 0 0\n")),
+             "at least 2 poses"),
         ]
         for args, expected in cases:
             with self.subTest(args=args):

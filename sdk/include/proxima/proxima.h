@@ -1,0 +1,271 @@
+/* Proxima: multi-contact proximity haptics. The C API.
+ *
+ * This header is the one public, stable interface of the SDK. It is plain
+ * C11: opaque value ids, plain structs, fixed-width types, 32-bit booleans
+ * and enums, no C++ type, no exception. Every function returns a
+ * proxResult (0 on success, negative on error); on error,
+ * proxGetLastError() names what was wrong, on the calling thread.
+ *
+ * Units and conventions: lengths in metres (or the units of the meshes you
+ * give, consistently), forces in newtons, torques in newton-metres, times in
+ * seconds. Poses are rigid: world = rotation * local + position, the rotation
+ * a unit quaternion (w, x, y, z). A contact's normal points from the other
+ * body to the tool; distances are never negative (intersecting surfaces are
+ * not contacts: ask for the intersection polylines).
+ *
+ * Threads: each function says from which thread it may be called.
+ *   "game"  - the thread that created the world (scene updates, rendering);
+ *   "any"   - any thread, concurrently with anything.
+ * Calls from the wrong thread fail with PROX_ERROR_WRONG_THREAD.
+ *
+ * A newcomer's walkthrough is samples/hello/hello.c.
+ */
+#ifndef PROXIMA_PROXIMA_H
+#define PROXIMA_PROXIMA_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "proxima/version.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32) && defined(PROX_BUILDING_SHARED)
+#define PROX_API __declspec(dllexport)
+#elif defined(_WIN32) && defined(PROX_USING_SHARED)
+#define PROX_API __declspec(dllimport)
+#elif defined(__GNUC__)
+#define PROX_API __attribute__((visibility("default")))
+#else
+#define PROX_API
+#endif
+
+/* The API version this header describes. proxDefaultWorldDef() stores it in
+ * the def; proxCreateWorld() refuses a def from an incompatible header. */
+#define PROX_API_VERSION ((PROX_VERSION_MAJOR << 16) | PROX_VERSION_MINOR)
+
+/* A 32-bit boolean: 0 is false, anything else true. */
+typedef int32_t proxBool;
+
+/* ---- results ----------------------------------------------------------- */
+
+typedef enum proxResult {
+  PROX_SUCCESS = 0,
+  PROX_ERROR_INVALID_ARGUMENT = -1, /* NULL, NaN, out of range, malformed def */
+  PROX_ERROR_INVALID_HANDLE = -2,   /* null, destroyed or foreign id */
+  PROX_ERROR_INVALID_MESH = -3,     /* empty, non-finite or degenerate mesh data */
+  PROX_ERROR_FILE = -4,             /* a file cannot be read */
+  PROX_ERROR_PARSE = -5,            /* a file's content is malformed */
+  PROX_ERROR_UNSUPPORTED = -6,      /* valid input using an unsupported feature */
+  PROX_ERROR_VERSION_MISMATCH = -7, /* header and library disagree */
+  PROX_ERROR_WRONG_THREAD = -8,     /* called from a thread the function does not allow */
+  PROX_ERROR_CAPACITY = -9,         /* an output buffer is too small (the count says how big) */
+  PROX_ERROR_INTERNAL = -10,        /* a bug in Proxima: please report it with the message */
+  PROX_RESULT_FORCE32 = 0x7FFFFFFF
+} proxResult;
+
+/* A short, static name for a result ("PROX_ERROR_INVALID_HANDLE"). Any thread. */
+PROX_API const char* proxResultString(proxResult result);
+
+/* The message of the last error on the calling thread, naming the offending
+ * argument; "" when the last call succeeded. Valid until the next call on
+ * this thread. Any thread. */
+PROX_API const char* proxGetLastError(void);
+
+/* The library's version (compare with PROX_VERSION_* of this header). Any thread. */
+typedef struct proxVersion {
+  int32_t major, minor, patch;
+} proxVersion;
+PROX_API proxVersion proxGetVersion(void);
+
+/* ---- ids ----------------------------------------------------------------- */
+
+/* Ids are values: copy them freely. Zero-initialised ids are null. A
+ * destroyed object's id stays invalid forever (the generation moves on). */
+typedef struct proxWorldId {
+  uint32_t index1; /* index + 1; 0 is null */
+  uint32_t generation;
+} proxWorldId;
+
+typedef struct proxMeshId {
+  uint32_t index1;
+  uint32_t generation;
+  proxWorldId world;
+} proxMeshId;
+
+typedef struct proxBodyId {
+  uint32_t index1;
+  uint32_t generation;
+  proxWorldId world;
+} proxBodyId;
+
+/* ---- geometry ------------------------------------------------------------ */
+
+typedef struct proxVec3 {
+  double x, y, z;
+} proxVec3;
+
+/* A unit quaternion; (1, 0, 0, 0) is the identity. */
+typedef struct proxQuat {
+  double w, x, y, z;
+} proxQuat;
+
+typedef struct proxPose {
+  proxVec3 position;
+  proxQuat rotation; /* normalised on input; a zero quaternion is an error */
+} proxPose;
+
+/* ---- world ----------------------------------------------------------------- */
+
+typedef enum proxMethod {
+  PROX_METHOD_PRECISE = 0,  /* the improved method: exact distances, visibility pre-test, reduction */
+  PROX_METHOD_ORIGINAL = 1, /* the Johnson-Cohen baseline: 7 x 7 feature points */
+  PROX_METHOD_FORCE32 = 0x7FFFFFFF
+} proxMethod;
+
+typedef enum proxForceCurve {
+  PROX_FORCE_EXPONENTIAL = 0, /* max at the safety distance, falls by e per decay length, 0 at the cutoff */
+  PROX_FORCE_LINEAR = 1,      /* max at the safety distance, linear to 0 at the cutoff */
+  PROX_FORCE_CURVE_FORCE32 = 0x7FFFFFFF
+} proxForceCurve;
+
+typedef struct proxForceSettings {
+  proxForceCurve curve;
+  double maxForce;       /* N: per contact at the safety distance, and the clip of the sum (> 0) */
+  double maxTorque;      /* N m: clip of the summed torque (> 0) */
+  double safetyDistance; /* m: full force at and inside this distance (>= 0, < cutoff) */
+  double decayLength;    /* m: exponential curve's length scale (> 0) */
+} proxForceSettings;
+
+typedef struct proxWorldDef {
+  int32_t apiVersion; /* set by proxDefaultWorldDef to PROX_API_VERSION */
+  proxMethod method;
+  double cutoff;           /* m: contacts farther apart are not wanted (> 0) */
+  proxForceSettings force; /* the default: the "hard" settings of docs/cli.md */
+  int32_t internalValue;   /* do not touch: lets proxCreateWorld detect a def not from proxDefaultWorldDef */
+} proxWorldDef;
+
+/* A def with every field at its default. Any thread. */
+PROX_API proxWorldDef proxDefaultWorldDef(void);
+
+/* Creates a world; the calling thread becomes its game thread. */
+PROX_API proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world);
+/* Destroys a world and everything in it. Game thread. */
+PROX_API proxResult proxDestroyWorld(proxWorldId world);
+/* Whether an id names a live world. Any thread. */
+PROX_API proxBool proxWorld_IsValid(proxWorldId world);
+
+/* ---- meshes ---------------------------------------------------------------- */
+
+typedef struct proxMeshDef {
+  const double* positions; /* x, y, z per vertex */
+  uint32_t vertexCount;
+  const uint32_t* indices; /* three per triangle, counter-clockwise seen from outside */
+  uint32_t triangleCount;
+  int32_t internalValue;
+} proxMeshDef;
+
+PROX_API proxMeshDef proxDefaultMeshDef(void);
+
+/* Validates the data (finite coordinates, indices in range, at least one
+ * non-degenerate triangle), welds vertices by position, builds the topology
+ * and the hierarchy. The data is copied. Game thread. */
+PROX_API proxResult proxWorld_CreateMesh(proxWorldId world, const proxMeshDef* def, proxMeshId* mesh);
+
+/* Reads a mesh from an OBJ, glTF (.gltf) or binary glTF (.glb) file; a glTF
+ * scene is merged into one mesh with its node transforms applied. Game thread. */
+PROX_API proxResult proxWorld_LoadMesh(proxWorldId world, const char* path, proxMeshId* mesh);
+
+/* Destroys a mesh; fails while bodies use it. Game thread. */
+PROX_API proxResult proxMesh_Destroy(proxMeshId mesh);
+
+typedef struct proxMeshInfo {
+  uint32_t triangleCount; /* after dropping triangles that repeat a vertex */
+  uint32_t vertexCount;   /* after welding */
+  uint32_t droppedTriangles;
+  uint32_t boundaryEdges;
+  uint32_t nonManifoldEdges;
+  proxVec3 boundsMin, boundsMax; /* in the mesh's own frame */
+} proxMeshInfo;
+
+/* Game thread. */
+PROX_API proxResult proxMesh_GetInfo(proxMeshId mesh, proxMeshInfo* info);
+
+/* ---- bodies ---------------------------------------------------------------- */
+
+typedef enum proxBodyType {
+  PROX_BODY_STATIC = 0,  /* never moves; static-static pairs are never tested */
+  PROX_BODY_MOVABLE = 1, /* moved by the application */
+  PROX_BODY_TOOL = 2,    /* held by the user: contacts and forces are computed for tools */
+  PROX_BODY_TYPE_FORCE32 = 0x7FFFFFFF
+} proxBodyType;
+
+typedef struct proxBodyDef {
+  proxMeshId mesh;
+  proxBodyType type;
+  proxPose pose;
+  /* Tools: the point (in the body's frame) torques are taken about. */
+  proxVec3 referencePoint;
+  int32_t internalValue;
+} proxBodyDef;
+
+PROX_API proxBodyDef proxDefaultBodyDef(void);
+/* Game thread. */
+PROX_API proxResult proxWorld_CreateBody(proxWorldId world, const proxBodyDef* def, proxBodyId* body);
+PROX_API proxResult proxBody_Destroy(proxBodyId body);
+PROX_API proxResult proxBody_SetPose(proxBodyId body, const proxPose* pose);
+PROX_API proxResult proxBody_GetPose(proxBodyId body, proxPose* pose);
+
+/* ---- stepping and results ---------------------------------------------------- */
+
+/* Runs the whole method once, on the calling thread, deterministically: for
+ * every tool, the bodies within the cutoff (a broadphase skips the rest), a
+ * global search with its reduction per pair (skipped when no pose changed),
+ * and the force and torque. For tests, benchmarks and engines that own their
+ * threads. Game thread. */
+PROX_API proxResult proxWorld_Step(proxWorldId world);
+
+typedef struct proxContact {
+  proxBodyId other;    /* the body the tool is near */
+  proxVec3 pointTool;  /* closest point on the tool, world */
+  proxVec3 pointOther; /* closest point on the other body, world */
+  proxVec3 normal;     /* unit, from the other body to the tool */
+  double distance;     /* m, > 0 */
+  uint32_t triangleTool, triangleOther;
+  int32_t featureTool, featureOther; /* 0 vertex, 1 edge, 2 face */
+} proxContact;
+
+/* The tool's contacts after the last step: copies up to `capacity` into
+ * `contacts` (may be NULL when capacity is 0) and sets *count to how many
+ * there are; PROX_ERROR_CAPACITY when they did not all fit. Game thread. */
+PROX_API proxResult proxBody_GetContacts(proxBodyId tool, proxContact* contacts, int32_t capacity,
+                                         int32_t* count);
+
+typedef struct proxWrench {
+  proxVec3 force;  /* N, on the tool, world frame */
+  proxVec3 torque; /* N m, on the tool about its reference point, world frame */
+  proxBool clipped;
+} proxWrench;
+
+/* The force and torque on a tool after the last step. Game thread. */
+PROX_API proxResult proxBody_GetWrench(proxBodyId tool, proxWrench* wrench);
+
+typedef struct proxWorldStats {
+  int32_t bodies, tools;
+  int32_t pairsInRange;  /* tool-body pairs the broadphase kept in the last step */
+  int32_t pairsSearched; /* ... of which ran a global search (the others had not moved) */
+  int32_t contacts;      /* over all tools */
+  int32_t candidates;    /* before reduction, over the pairs searched */
+  double stepSeconds;
+} proxWorldStats;
+
+/* Game thread. */
+PROX_API proxResult proxWorld_GetStats(proxWorldId world, proxWorldStats* stats);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* PROXIMA_PROXIMA_H */

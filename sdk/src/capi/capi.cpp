@@ -1,0 +1,509 @@
+// The C API over the runtime: validation, ids, errors. No C++ exception
+// crosses this file's functions: each body runs inside guard().
+#include <proxima/proxima.h>
+
+#include "io/obj.h"
+#include "runtime/world.h"
+#if PROX_WITH_GLTF
+#include "io/gltf.h"
+#endif
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <new>
+#include <string>
+#include <thread>
+#include <vector>
+
+// The public structs' sizes are part of the ABI; the bindings check the same
+// numbers.
+static_assert(sizeof(proxWorldId) == 8, "ABI");
+static_assert(sizeof(proxMeshId) == 16, "ABI");
+static_assert(sizeof(proxBodyId) == 16, "ABI");
+static_assert(sizeof(proxVec3) == 24, "ABI");
+static_assert(sizeof(proxQuat) == 32, "ABI");
+static_assert(sizeof(proxPose) == 56, "ABI");
+static_assert(sizeof(proxForceSettings) == 40, "ABI");
+static_assert(sizeof(proxWorldDef) == 64, "ABI");
+static_assert(sizeof(proxMeshDef) == 32, "ABI");
+static_assert(sizeof(proxBodyDef) == 112, "ABI");
+static_assert(sizeof(proxContact) == 112, "ABI");
+static_assert(sizeof(proxWrench) == 56, "ABI");
+static_assert(sizeof(proxWorldStats) == 32, "ABI");
+static_assert(sizeof(proxMeshInfo) == 68 + 4, "ABI");
+static_assert(sizeof(proxResult) == 4 && sizeof(proxMethod) == 4 && sizeof(proxBodyType) == 4, "ABI");
+
+namespace {
+
+using namespace prox;
+
+// Marks defs made by the proxDefault*Def functions.
+constexpr int32_t kDefCookie = 0x50524F58;  // "PROX"
+
+thread_local std::string g_last_error;
+
+struct Failure {
+  proxResult code;
+  std::string message;
+};
+
+[[noreturn]] void fail(proxResult code, std::string message) { throw Failure{code, std::move(message)}; }
+
+template <typename F>
+proxResult guard(const char* function, F&& body) {
+  try {
+    body();
+    g_last_error.clear();
+    return PROX_SUCCESS;
+  } catch (const Failure& f) {
+    g_last_error = std::string(function) + ": " + f.message;
+    return f.code;
+  } catch (const std::bad_alloc&) {
+    g_last_error = std::string(function) + ": out of memory";
+    return PROX_ERROR_INTERNAL;
+  } catch (const std::exception& e) {
+    g_last_error = std::string(function) + ": internal error: " + e.what();
+    return PROX_ERROR_INTERNAL;
+  } catch (...) {
+    g_last_error = std::string(function) + ": internal error";
+    return PROX_ERROR_INTERNAL;
+  }
+}
+
+// ---- the world registry ---------------------------------------------------------
+
+struct WorldEntry {
+  uint32_t generation = 0;
+  std::unique_ptr<runtime::World> world;
+  std::thread::id owner;
+};
+
+std::mutex g_worlds_mutex;  // guards the registry's shape, not the worlds
+std::vector<WorldEntry> g_worlds;
+
+runtime::World& world_of(proxWorldId id, const char* what = "world") {
+  if (id.index1 == 0) fail(PROX_ERROR_INVALID_HANDLE, std::string(what) + " is a null id");
+  std::lock_guard<std::mutex> lock(g_worlds_mutex);
+  const uint32_t i = id.index1 - 1;
+  if (i >= g_worlds.size() || g_worlds[i].generation != id.generation || !g_worlds[i].world)
+    fail(PROX_ERROR_INVALID_HANDLE,
+         std::string(what) + " does not name a live world (destroyed, or never created)");
+  if (g_worlds[i].owner != std::this_thread::get_id())
+    fail(PROX_ERROR_WRONG_THREAD,
+         "called from a thread other than the world's game thread (the one that created it)");
+  return *g_worlds[i].world;
+}
+
+runtime::Handle mesh_of(proxMeshId id, runtime::World*& world) {
+  world = &world_of(id.world, "mesh's world");
+  if (id.index1 == 0) fail(PROX_ERROR_INVALID_HANDLE, "mesh is a null id");
+  const runtime::Handle h{id.index1 - 1, id.generation};
+  if (!world->mesh_alive(h)) fail(PROX_ERROR_INVALID_HANDLE, "mesh does not name a live mesh of its world");
+  return h;
+}
+
+runtime::Handle body_of(proxBodyId id, runtime::World*& world, const char* what = "body") {
+  world = &world_of(id.world, "body's world");
+  if (id.index1 == 0) fail(PROX_ERROR_INVALID_HANDLE, std::string(what) + " is a null id");
+  const runtime::Handle h{id.index1 - 1, id.generation};
+  if (!world->body_alive(h))
+    fail(PROX_ERROR_INVALID_HANDLE, std::string(what) + " does not name a live body of its world");
+  return h;
+}
+
+runtime::Handle tool_of(proxBodyId id, runtime::World*& world) {
+  const runtime::Handle h = body_of(id, world, "tool");
+  if (world->type(h) != runtime::BodyType::Tool)
+    fail(PROX_ERROR_INVALID_ARGUMENT, "tool is not a PROX_BODY_TOOL body");
+  return h;
+}
+
+// ---- conversions and checks -------------------------------------------------------
+
+template <typename T>
+void need(const T* p, const char* name) {
+  if (!p) fail(PROX_ERROR_INVALID_ARGUMENT, std::string(name) + " is NULL");
+}
+
+void need_finite(double v, const std::string& name) {
+  if (!std::isfinite(v))
+    fail(PROX_ERROR_INVALID_ARGUMENT, name + " is not finite (" + std::to_string(v) + ")");
+}
+
+void need_positive(double v, const std::string& name) {
+  need_finite(v, name);
+  if (!(v > 0.0)) fail(PROX_ERROR_INVALID_ARGUMENT, name + " must be > 0 (it is " + std::to_string(v) + ")");
+}
+
+Vec3 to_vec(const proxVec3& v, const std::string& name) {
+  need_finite(v.x, name + ".x");
+  need_finite(v.y, name + ".y");
+  need_finite(v.z, name + ".z");
+  return {v.x, v.y, v.z};
+}
+
+proxVec3 to_c(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+Pose to_pose(const proxPose& p, const std::string& name) {
+  const Vec3 t = to_vec(p.position, name + ".position");
+  const double q[4] = {p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z};
+  for (int i = 0; i < 4; ++i) need_finite(q[i], name + ".rotation");
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (!(n > 1e-12)) fail(PROX_ERROR_INVALID_ARGUMENT, name + ".rotation is a zero quaternion");
+  return Pose::from_quaternion(t, q[0] / n, q[1] / n, q[2] / n, q[3] / n);
+}
+
+proxPose to_c(const Pose& p) {
+  const glm::dquat q = glm::quat_cast(p.rotation);
+  return {to_c(p.translation), {q.w, q.x, q.y, q.z}};
+}
+
+proxResult status_code(const Status& s) {
+  switch (s.code()) {
+    case StatusCode::Ok:
+      return PROX_SUCCESS;
+    case StatusCode::InvalidArgument:
+      return PROX_ERROR_INVALID_MESH;
+    case StatusCode::ParseError:
+      return PROX_ERROR_PARSE;
+    case StatusCode::IoError:
+      return PROX_ERROR_FILE;
+    case StatusCode::Unsupported:
+      return PROX_ERROR_UNSUPPORTED;
+  }
+  return PROX_ERROR_INTERNAL;
+}
+
+void check(const Status& s) {
+  if (!s) fail(status_code(s), s.message());
+}
+
+ForceSettings to_force(const proxForceSettings& f, double cutoff) {
+  if (f.curve != PROX_FORCE_EXPONENTIAL && f.curve != PROX_FORCE_LINEAR)
+    fail(PROX_ERROR_INVALID_ARGUMENT, "def->force.curve is not a proxForceCurve");
+  need_positive(f.maxForce, "def->force.maxForce");
+  need_positive(f.maxTorque, "def->force.maxTorque");
+  need_positive(f.decayLength, "def->force.decayLength");
+  need_finite(f.safetyDistance, "def->force.safetyDistance");
+  if (f.safetyDistance < 0.0 || !(f.safetyDistance < cutoff))
+    fail(PROX_ERROR_INVALID_ARGUMENT, "def->force.safetyDistance must be in [0, cutoff)");
+  ForceSettings s;
+  s.curve = f.curve == PROX_FORCE_LINEAR ? ForceCurve::Linear : ForceCurve::Exponential;
+  s.max_force = f.maxForce;
+  s.max_torque = f.maxTorque;
+  s.safety_distance = f.safetyDistance;
+  s.decay_length = f.decayLength;
+  s.cutoff = cutoff;
+  return s;
+}
+
+proxMeshId make_mesh_id(proxWorldId world, runtime::Handle h) { return {h.index + 1, h.generation, world}; }
+
+proxMeshId add_mesh(proxWorldId world_id, runtime::World& world, const MeshInput& input) {
+  Status status;
+  const runtime::Handle h = world.create_mesh(input, status);
+  check(status);
+  return make_mesh_id(world_id, h);
+}
+
+}  // namespace
+
+extern "C" {
+
+const char* proxResultString(proxResult result) {
+  switch (result) {
+    case PROX_SUCCESS:
+      return "PROX_SUCCESS";
+    case PROX_ERROR_INVALID_ARGUMENT:
+      return "PROX_ERROR_INVALID_ARGUMENT";
+    case PROX_ERROR_INVALID_HANDLE:
+      return "PROX_ERROR_INVALID_HANDLE";
+    case PROX_ERROR_INVALID_MESH:
+      return "PROX_ERROR_INVALID_MESH";
+    case PROX_ERROR_FILE:
+      return "PROX_ERROR_FILE";
+    case PROX_ERROR_PARSE:
+      return "PROX_ERROR_PARSE";
+    case PROX_ERROR_UNSUPPORTED:
+      return "PROX_ERROR_UNSUPPORTED";
+    case PROX_ERROR_VERSION_MISMATCH:
+      return "PROX_ERROR_VERSION_MISMATCH";
+    case PROX_ERROR_WRONG_THREAD:
+      return "PROX_ERROR_WRONG_THREAD";
+    case PROX_ERROR_CAPACITY:
+      return "PROX_ERROR_CAPACITY";
+    case PROX_ERROR_INTERNAL:
+      return "PROX_ERROR_INTERNAL";
+    case PROX_RESULT_FORCE32:
+      break;
+  }
+  return "unknown proxResult";
+}
+
+const char* proxGetLastError(void) { return g_last_error.c_str(); }
+
+proxVersion proxGetVersion(void) { return {PROX_VERSION_MAJOR, PROX_VERSION_MINOR, PROX_VERSION_PATCH}; }
+
+proxWorldDef proxDefaultWorldDef(void) {
+  const ForceSettings f = hard_force_settings();
+  proxWorldDef d{};
+  d.apiVersion = PROX_API_VERSION;
+  d.method = PROX_METHOD_PRECISE;
+  d.cutoff = f.cutoff;
+  d.force = {PROX_FORCE_EXPONENTIAL, f.max_force, f.max_torque, f.safety_distance, f.decay_length};
+  d.internalValue = kDefCookie;
+  return d;
+}
+
+proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
+  return guard("proxCreateWorld", [&] {
+    need(def, "def");
+    need(world, "world");
+    *world = proxWorldId{};
+    if (def->internalValue != kDefCookie)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultWorldDef()");
+    if (def->apiVersion != PROX_API_VERSION)
+      fail(PROX_ERROR_VERSION_MISMATCH, "def comes from API version " + std::to_string(def->apiVersion) +
+                                            ", the library is " + std::to_string(PROX_API_VERSION));
+    if (def->method != PROX_METHOD_PRECISE && def->method != PROX_METHOD_ORIGINAL)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "def->method is not a proxMethod");
+    need_positive(def->cutoff, "def->cutoff");
+    runtime::WorldSettings s;
+    s.method = def->method == PROX_METHOD_ORIGINAL ? Method::Original : Method::Precise;
+    s.cutoff = def->cutoff;
+    s.force = to_force(def->force, def->cutoff);
+    auto w = std::make_unique<runtime::World>(s);
+    std::lock_guard<std::mutex> lock(g_worlds_mutex);
+    uint32_t i = 0;
+    while (i < g_worlds.size() && g_worlds[i].world) ++i;
+    if (i == g_worlds.size()) g_worlds.emplace_back();
+    g_worlds[i].generation += 1;
+    g_worlds[i].world = std::move(w);
+    g_worlds[i].owner = std::this_thread::get_id();
+    *world = {i + 1, g_worlds[i].generation};
+  });
+}
+
+proxResult proxDestroyWorld(proxWorldId world) {
+  return guard("proxDestroyWorld", [&] {
+    world_of(world);  // validates id and thread
+    std::unique_ptr<runtime::World> doomed;
+    {
+      std::lock_guard<std::mutex> lock(g_worlds_mutex);
+      doomed = std::move(g_worlds[world.index1 - 1].world);
+    }
+  });
+}
+
+proxBool proxWorld_IsValid(proxWorldId world) {
+  if (world.index1 == 0) return 0;
+  std::lock_guard<std::mutex> lock(g_worlds_mutex);
+  const uint32_t i = world.index1 - 1;
+  return i < g_worlds.size() && g_worlds[i].generation == world.generation && g_worlds[i].world ? 1 : 0;
+}
+
+proxMeshDef proxDefaultMeshDef(void) {
+  proxMeshDef d{};
+  d.internalValue = kDefCookie;
+  return d;
+}
+
+proxResult proxWorld_CreateMesh(proxWorldId world, const proxMeshDef* def, proxMeshId* mesh) {
+  return guard("proxWorld_CreateMesh", [&] {
+    need(mesh, "mesh");
+    *mesh = proxMeshId{};
+    runtime::World& w = world_of(world);
+    need(def, "def");
+    if (def->internalValue != kDefCookie)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultMeshDef()");
+    *mesh = add_mesh(world, w, {def->positions, def->vertexCount, def->indices, def->triangleCount});
+  });
+}
+
+proxResult proxWorld_LoadMesh(proxWorldId world, const char* path, proxMeshId* mesh) {
+  return guard("proxWorld_LoadMesh", [&] {
+    need(mesh, "mesh");
+    *mesh = proxMeshId{};
+    runtime::World& w = world_of(world);
+    need(path, "path");
+    std::string p(path);
+    std::string ext = p.substr(p.find_last_of('.') == std::string::npos ? p.size() : p.find_last_of('.') + 1);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == "obj") {
+      io::ObjData obj;
+      check(io::read_obj(p, obj));
+      *mesh = add_mesh(world, w,
+                       {obj.positions.data(), static_cast<uint32_t>(obj.positions.size() / 3),
+                        obj.indices.data(), static_cast<uint32_t>(obj.indices.size() / 3)});
+      return;
+    }
+#if PROX_WITH_GLTF
+    if (ext == "gltf" || ext == "glb") {
+      std::vector<io::GltfMesh> parts;
+      check(io::load_gltf(p, io::GltfLoadOptions{}, parts));
+      if (parts.empty()) fail(PROX_ERROR_INVALID_MESH, p + ": the scene has no triangles");
+      const io::GltfMesh& m = parts.front();
+      *mesh = add_mesh(world, w,
+                       {m.positions.data(), static_cast<uint32_t>(m.positions.size() / 3), m.indices.data(),
+                        static_cast<uint32_t>(m.indices.size() / 3)});
+      return;
+    }
+#endif
+    fail(PROX_ERROR_UNSUPPORTED,
+         p + ": unsupported file type '." + ext + "' (.obj, .gltf and .glb are read)");
+  });
+}
+
+proxResult proxMesh_Destroy(proxMeshId mesh) {
+  return guard("proxMesh_Destroy", [&] {
+    runtime::World* w = nullptr;
+    const runtime::Handle h = mesh_of(mesh, w);
+    Status s;
+    if (!w->destroy_mesh(h, s)) fail(PROX_ERROR_INVALID_ARGUMENT, s.message());
+  });
+}
+
+proxResult proxMesh_GetInfo(proxMeshId mesh, proxMeshInfo* info) {
+  return guard("proxMesh_GetInfo", [&] {
+    need(info, "info");
+    runtime::World* w = nullptr;
+    const runtime::Handle h = mesh_of(mesh, w);
+    const Mesh& m = w->mesh(h);
+    const MeshStats& s = m.stats();
+    *info = proxMeshInfo{s.triangles,         s.vertices,           s.dropped_triangles, s.boundary_edges,
+                         s.nonmanifold_edges, to_c(m.bounds().min), to_c(m.bounds().max)};
+  });
+}
+
+proxBodyDef proxDefaultBodyDef(void) {
+  proxBodyDef d{};
+  d.type = PROX_BODY_STATIC;
+  d.pose.rotation.w = 1.0;
+  d.internalValue = kDefCookie;
+  return d;
+}
+
+proxResult proxWorld_CreateBody(proxWorldId world, const proxBodyDef* def, proxBodyId* body) {
+  return guard("proxWorld_CreateBody", [&] {
+    need(body, "body");
+    *body = proxBodyId{};
+    runtime::World& w = world_of(world);
+    need(def, "def");
+    if (def->internalValue != kDefCookie)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultBodyDef()");
+    runtime::World* mesh_world = nullptr;
+    const runtime::Handle mesh = mesh_of(def->mesh, mesh_world);
+    if (mesh_world != &w) fail(PROX_ERROR_INVALID_HANDLE, "def->mesh belongs to another world");
+    runtime::BodyType type;
+    switch (def->type) {
+      case PROX_BODY_STATIC:
+        type = runtime::BodyType::Static;
+        break;
+      case PROX_BODY_MOVABLE:
+        type = runtime::BodyType::Movable;
+        break;
+      case PROX_BODY_TOOL:
+        type = runtime::BodyType::Tool;
+        break;
+      default:
+        fail(PROX_ERROR_INVALID_ARGUMENT, "def->type is not a proxBodyType");
+    }
+    const Pose pose = to_pose(def->pose, "def->pose");
+    const Vec3 reference = to_vec(def->referencePoint, "def->referencePoint");
+    const runtime::Handle h = w.create_body(mesh, type, pose, reference);
+    *body = {h.index + 1, h.generation, world};
+  });
+}
+
+proxResult proxBody_Destroy(proxBodyId body) {
+  return guard("proxBody_Destroy", [&] {
+    runtime::World* w = nullptr;
+    const runtime::Handle h = body_of(body, w);
+    w->destroy_body(h);
+  });
+}
+
+proxResult proxBody_SetPose(proxBodyId body, const proxPose* pose) {
+  return guard("proxBody_SetPose", [&] {
+    runtime::World* w = nullptr;
+    const runtime::Handle h = body_of(body, w);
+    need(pose, "pose");
+    const Pose p = to_pose(*pose, "pose");
+    if (w->type(h) == runtime::BodyType::Static)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "body is static; create it PROX_BODY_MOVABLE to move it");
+    w->set_pose(h, p);
+  });
+}
+
+proxResult proxBody_GetPose(proxBodyId body, proxPose* pose) {
+  return guard("proxBody_GetPose", [&] {
+    need(pose, "pose");
+    runtime::World* w = nullptr;
+    const runtime::Handle h = body_of(body, w);
+    *pose = to_c(w->pose(h));
+  });
+}
+
+proxResult proxWorld_Step(proxWorldId world) {
+  return guard("proxWorld_Step", [&] { world_of(world).step(); });
+}
+
+proxResult proxBody_GetContacts(proxBodyId tool, proxContact* contacts, int32_t capacity, int32_t* count) {
+  return guard("proxBody_GetContacts", [&] {
+    need(count, "count");
+    *count = 0;
+    if (capacity < 0) fail(PROX_ERROR_INVALID_ARGUMENT, "capacity is negative");
+    if (capacity > 0) need(contacts, "contacts");
+    runtime::World* w = nullptr;
+    const runtime::Handle h = tool_of(tool, w);
+    const std::vector<runtime::Contact>& list = w->contacts(h);
+    *count = static_cast<int32_t>(list.size());
+    const std::size_t n = std::min<std::size_t>(list.size(), static_cast<std::size_t>(capacity));
+    for (std::size_t i = 0; i < n; ++i) {
+      const runtime::Contact& c = list[i];
+      const LmdPair& p = c.lmd;
+      proxContact& out = contacts[i];
+      out.other = {c.other + 1, w->body_generation(c.other), tool.world};
+      out.pointTool = to_c(p.point_b);
+      out.pointOther = to_c(p.point_a);
+      const Vec3 d = p.point_b - p.point_a;
+      const double len = glm::length(d);
+      out.normal = to_c(len > 0.0 ? d / len : Vec3(0.0));
+      out.distance = p.distance;
+      out.triangleTool = p.tri_b;
+      out.triangleOther = p.tri_a;
+      out.featureTool = static_cast<int32_t>(p.feature_b.kind);
+      out.featureOther = static_cast<int32_t>(p.feature_a.kind);
+    }
+    if (n < list.size())
+      fail(PROX_ERROR_CAPACITY, "capacity " + std::to_string(capacity) + " is less than the " +
+                                    std::to_string(list.size()) + " contacts (*count says how many)");
+  });
+}
+
+proxResult proxBody_GetWrench(proxBodyId tool, proxWrench* wrench) {
+  return guard("proxBody_GetWrench", [&] {
+    need(wrench, "wrench");
+    runtime::World* w = nullptr;
+    const runtime::Handle h = tool_of(tool, w);
+    const Wrench& x = w->wrench(h);
+    *wrench = {to_c(x.force), to_c(x.torque), x.clipped ? 1 : 0};
+  });
+}
+
+proxResult proxWorld_GetStats(proxWorldId world, proxWorldStats* stats) {
+  return guard("proxWorld_GetStats", [&] {
+    need(stats, "stats");
+    const runtime::World& w = world_of(world);
+    const runtime::StepStats& s = w.stats();
+    *stats = {w.body_count(),   w.tool_count(), s.pairs_in_range,
+              s.pairs_searched, s.contacts,     static_cast<int32_t>(s.candidates),
+              s.seconds};
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,170 @@
+#include "runtime/world.h"
+
+#include <glm/geometric.hpp>
+
+#include <chrono>
+
+namespace prox::runtime {
+namespace {
+
+template <typename Slot>
+std::uint32_t free_slot(std::vector<Slot>& slots) {
+  for (std::uint32_t i = 0; i < slots.size(); ++i)
+    if (!slots[i].alive) return i;
+  slots.emplace_back();
+  return static_cast<std::uint32_t>(slots.size() - 1);
+}
+
+std::uint64_t pair_key(std::uint32_t tool, std::uint32_t body) { return (std::uint64_t{tool} << 32) | body; }
+
+bool overlap(const Aabb& a, const Aabb& b) {
+  return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y &&
+         a.min.z <= b.max.z && b.min.z <= a.max.z;
+}
+
+}  // namespace
+
+World::World(const WorldSettings& settings) : settings_(settings) {
+  settings_.force.cutoff = settings_.cutoff;
+}
+
+Handle World::create_mesh(const MeshInput& input, Status& status) {
+  auto data = std::make_unique<MeshData>();
+  data->mesh = Mesh::build(input, status);
+  if (!status) return {};
+  data->snch = std::make_unique<Snch>(data->mesh);
+  const std::uint32_t i = free_slot(meshes_);
+  MeshSlot& slot = meshes_[i];
+  slot.generation += 1;
+  slot.alive = true;
+  slot.data = std::move(data);
+  slot.users = 0;
+  return {i, slot.generation};
+}
+
+bool World::mesh_alive(Handle h) const {
+  return h.index < meshes_.size() && meshes_[h.index].alive && meshes_[h.index].generation == h.generation;
+}
+
+bool World::destroy_mesh(Handle h, Status& status) {
+  MeshSlot& slot = meshes_[h.index];
+  if (slot.users > 0) {
+    status = Status(StatusCode::InvalidArgument,
+                    "mesh is used by " + std::to_string(slot.users) + " bodies; destroy them first");
+    return false;
+  }
+  slot.alive = false;
+  slot.data.reset();
+  return true;
+}
+
+Handle World::create_body(Handle mesh, BodyType type, const Pose& pose, const Vec3& reference_point) {
+  const std::uint32_t i = free_slot(bodies_);
+  BodySlot& b = bodies_[i];
+  b.generation += 1;
+  b.alive = true;
+  b.mesh = mesh.index;
+  b.type = type;
+  b.pose = pose;
+  b.reference_point = reference_point;
+  b.pose_version += 1;
+  b.contacts.clear();
+  b.wrench = Wrench{};
+  meshes_[mesh.index].users += 1;
+  return {i, b.generation};
+}
+
+bool World::body_alive(Handle h) const {
+  return h.index < bodies_.size() && bodies_[h.index].alive && bodies_[h.index].generation == h.generation;
+}
+
+void World::destroy_body(Handle h) {
+  BodySlot& b = bodies_[h.index];
+  b.alive = false;
+  b.contacts.clear();
+  meshes_[b.mesh].users -= 1;
+}
+
+void World::set_pose(Handle h, const Pose& pose) {
+  BodySlot& b = bodies_[h.index];
+  b.pose = pose;
+  b.pose_version += 1;
+}
+
+int World::body_count() const {
+  int n = 0;
+  for (const BodySlot& b : bodies_) n += b.alive;
+  return n;
+}
+
+int World::tool_count() const {
+  int n = 0;
+  for (const BodySlot& b : bodies_) n += b.alive && b.type == BodyType::Tool;
+  return n;
+}
+
+Aabb World::world_box(const BodySlot& b, double margin) const {
+  const Aabb& local = meshes_[b.mesh].data->mesh.bounds();
+  // The box of the rotated box: centre moved, half-extents through |R|.
+  const Vec3 centre = b.pose.apply(0.5 * (local.min + local.max));
+  const Vec3 half = 0.5 * (local.max - local.min);
+  Vec3 extent(0.0);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) extent[r] += std::abs(b.pose.rotation[c][r]) * half[c];
+  return {centre - extent - Vec3(margin), centre + extent + Vec3(margin)};
+}
+
+void World::step() {
+  const auto start = std::chrono::steady_clock::now();
+  stats_ = StepStats{};
+  for (auto& [key, pair] : pairs_) pair.seen = false;
+  for (std::uint32_t t = 0; t < bodies_.size(); ++t) {
+    BodySlot& tool = bodies_[t];
+    if (!tool.alive || tool.type != BodyType::Tool) continue;
+    tool.contacts.clear();
+    const Aabb tool_box = world_box(tool, settings_.cutoff);
+    const MeshData& tool_mesh = *meshes_[tool.mesh].data;
+    std::vector<LmdPair> all;
+    for (std::uint32_t o = 0; o < bodies_.size(); ++o) {
+      const BodySlot& other = bodies_[o];
+      if (o == t || !other.alive) continue;
+      // Broadphase: only pairs whose boxes (grown by the cutoff) overlap
+      // cost any narrow work.
+      if (!overlap(tool_box, world_box(other, 0.0))) continue;
+      ++stats_.pairs_in_range;
+      PairSlot& pair = pairs_[pair_key(t, o)];
+      pair.seen = true;
+      if (pair.tool_generation != tool.generation || pair.body_generation != other.generation) {
+        pair = PairSlot{};  // the slots were reused by new bodies
+        pair.seen = true;
+        pair.tool_generation = tool.generation;
+        pair.body_generation = other.generation;
+      }
+      // An unchanged pose pair has the same answer: skip the search.
+      if (pair.tool_version != tool.pose_version || pair.body_version != other.pose_version) {
+        const MeshData& other_mesh = *meshes_[other.mesh].data;
+        const PairQuery q{&other_mesh.mesh, other_mesh.snch.get(), other.pose,
+                          &tool_mesh.mesh,  tool_mesh.snch.get(),  tool.pose,
+                          settings_.cutoff};
+        ProximityResult r;
+        find_lmds(q, settings_.method, pair.state, r);
+        pair.lmds = std::move(r.lmds);
+        pair.tool_version = tool.pose_version;
+        pair.body_version = other.pose_version;
+        ++stats_.pairs_searched;
+        stats_.candidates += r.candidates;
+      }
+      for (const LmdPair& p : pair.lmds) {
+        tool.contacts.push_back({o, p});
+        all.push_back(p);
+      }
+    }
+    tool.wrench = tool_wrench(settings_.force, all, tool.pose.apply(tool.reference_point));
+    stats_.contacts += static_cast<int>(tool.contacts.size());
+  }
+  // Pairs out of range lose their state (and their memory).
+  for (auto it = pairs_.begin(); it != pairs_.end();) it = it->second.seen ? std::next(it) : pairs_.erase(it);
+  stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace prox::runtime

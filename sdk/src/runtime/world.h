@@ -1,0 +1,110 @@
+// A world of meshes and bodies: what the C API drives. Engine objects live in
+// generation-checked slots so that stale ids are detected, never followed.
+#pragma once
+
+#include "contact/force.h"
+#include "contact/proximity.h"
+
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+namespace prox::runtime {
+
+enum class BodyType { Static, Movable, Tool };
+
+struct WorldSettings {
+  Method method = Method::Precise;
+  double cutoff = 0.005;
+  ForceSettings force = hard_force_settings();  // its cutoff is kept equal to `cutoff`
+};
+
+// A slot index and the generation it had when the object was created.
+struct Handle {
+  std::uint32_t index = 0;
+  std::uint32_t generation = 0;
+};
+
+struct Contact {
+  std::uint32_t other = 0;  // body slot
+  LmdPair lmd;              // A = the other body, B = the tool
+};
+
+struct StepStats {
+  int pairs_in_range = 0;
+  int pairs_searched = 0;
+  int contacts = 0;
+  long candidates = 0;
+  double seconds = 0.0;
+};
+
+class World {
+ public:
+  explicit World(const WorldSettings& settings);
+
+  // Meshes. create_mesh validates and builds; on error `status` says why.
+  Handle create_mesh(const MeshInput& input, Status& status);
+  bool mesh_alive(Handle h) const;
+  // Fails (false) while bodies use the mesh.
+  bool destroy_mesh(Handle h, Status& status);
+  const Mesh& mesh(Handle h) const { return meshes_[h.index].data->mesh; }
+
+  // Bodies.
+  Handle create_body(Handle mesh, BodyType type, const Pose& pose, const Vec3& reference_point);
+  bool body_alive(Handle h) const;
+  void destroy_body(Handle h);
+  void set_pose(Handle h, const Pose& pose);
+  const Pose& pose(Handle h) const { return bodies_[h.index].pose; }
+  BodyType type(Handle h) const { return bodies_[h.index].type; }
+  std::uint32_t body_generation(std::uint32_t index) const { return bodies_[index].generation; }
+
+  // The deterministic step: every tool against the bodies in range.
+  void step();
+  const std::vector<Contact>& contacts(Handle tool) const { return bodies_[tool.index].contacts; }
+  const Wrench& wrench(Handle tool) const { return bodies_[tool.index].wrench; }
+  const StepStats& stats() const { return stats_; }
+  int body_count() const;
+  int tool_count() const;
+
+ private:
+  struct MeshData {
+    Mesh mesh;
+    std::unique_ptr<Snch> snch;
+  };
+  struct MeshSlot {
+    std::uint32_t generation = 0;
+    bool alive = false;
+    std::unique_ptr<MeshData> data;
+    int users = 0;
+  };
+  struct BodySlot {
+    std::uint32_t generation = 0;
+    bool alive = false;
+    std::uint32_t mesh = 0;
+    BodyType type = BodyType::Static;
+    Pose pose;
+    Vec3 reference_point{0.0};
+    std::uint64_t pose_version = 0;  // bumped by every set_pose
+    std::vector<Contact> contacts;   // tools: after the last step
+    Wrench wrench;                   // tools: after the last step
+  };
+  // What a tool-body pair keeps between steps.
+  struct PairSlot {
+    PairState state;
+    std::vector<LmdPair> lmds;
+    std::uint64_t tool_version = ~0ull, body_version = ~0ull;
+    std::uint32_t tool_generation = 0, body_generation = 0;
+    bool seen = false;  // in range in the current step
+  };
+
+  Aabb world_box(const BodySlot& b, double margin) const;
+
+  WorldSettings settings_;
+  std::vector<MeshSlot> meshes_;
+  std::vector<BodySlot> bodies_;
+  std::unordered_map<std::uint64_t, PairSlot> pairs_;
+  StepStats stats_;
+};
+
+}  // namespace prox::runtime

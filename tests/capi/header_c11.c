@@ -1,0 +1,33 @@
+/* The public header compiles as strict C11, and the struct sizes a C
+ * compiler sees are the ones the library was built with (and the bindings
+ * check). Also: header and library versions agree. */
+#include <proxima/proxima.h>
+
+#include <stdio.h>
+
+_Static_assert(sizeof(proxWorldId) == 8, "proxWorldId");
+_Static_assert(sizeof(proxMeshId) == 16, "proxMeshId");
+_Static_assert(sizeof(proxBodyId) == 16, "proxBodyId");
+_Static_assert(sizeof(proxPose) == 56, "proxPose");
+_Static_assert(sizeof(proxWorldDef) == 64, "proxWorldDef");
+_Static_assert(sizeof(proxMeshDef) == 32, "proxMeshDef");
+_Static_assert(sizeof(proxBodyDef) == 112, "proxBodyDef");
+_Static_assert(sizeof(proxContact) == 112, "proxContact");
+_Static_assert(sizeof(proxWrench) == 56, "proxWrench");
+_Static_assert(sizeof(proxWorldStats) == 32, "proxWorldStats");
+_Static_assert(sizeof(proxMeshInfo) == 72, "proxMeshInfo");
+_Static_assert(sizeof(proxResult) == 4, "enums are 32-bit");
+_Static_assert(sizeof(proxBodyType) == 4, "enums are 32-bit");
+
+int main(void) {
+  const proxVersion v = proxGetVersion();
+  if (v.major != PROX_VERSION_MAJOR || v.minor != PROX_VERSION_MINOR || v.patch != PROX_VERSION_PATCH) {
+    fprintf(stderr, "header %d.%d.%d, library %d.%d.%d\n", PROX_VERSION_MAJOR, PROX_VERSION_MINOR,
+            PROX_VERSION_PATCH, v.major, v.minor, v.patch);
+    return 1;
+  }
+  proxWorldDef def = proxDefaultWorldDef();
+  if (def.apiVersion != PROX_API_VERSION) return 1;
+  printf("proxima %d.%d.%d\n", v.major, v.minor, v.patch);
+  return 0;
+}
