@@ -14,4 +14,9 @@ need_packages() {
 }
 
 # The compiler, CMake and the libraries the core and its tests need.
-CORE_PACKAGES=(g++ cmake ninja-build libglm-dev libgtest-dev)
+CORE_PACKAGES=(g++ cmake ninja-build libglm-dev libgtest-dev
+  libtinygltf-dev nlohmann-json3-dev)  # glTF loading (PROX_WITH_GLTF)
+
+# The scene benchmark's peers and plots (scripts/bench.sh): FCL to measure
+# against (never a dependency of the SDK) and a venv for matplotlib.
+BENCH_PACKAGES=(libbenchmark-dev libfcl-dev python3 python3-venv)

@@ -15,8 +15,9 @@ configure() {  # configure DIR [cmake args...]
   cmake -S . -B "$dir" -G Ninja -DPROX_WARNINGS_AS_ERRORS=ON "$@" >/dev/null
 }
 
-echo "== core only (no tests, no benchmarks)"
-configure build/core -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_BENCHMARKS=OFF
+echo "== core only (nothing optional: no tests, samples, benchmarks or glTF)"
+configure build/core -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_SAMPLES=OFF -DPROX_BUILD_BENCHMARKS=OFF \
+  -DPROX_WITH_GLTF=OFF
 cmake --build build/core -j "$jobs"
 
 echo "== address + undefined-behaviour sanitizers"

@@ -14,6 +14,9 @@
 #include "contact/polylines.h"
 #include "contact/proximity.h"
 #include "io/obj.h"
+#if PROX_WITH_GLTF
+#include "io/gltf.h"
+#endif
 #include "json.h"
 
 #include <proxima/version.h>
@@ -85,8 +88,19 @@ std::shared_ptr<Model> load(const std::string& path) {
     if (!s) fail(s.message());
     positions = std::move(obj.positions);
     indices = std::move(obj.indices);
-  } else {
-    fail(path + ": unsupported file type '." + ext + "' (this build reads .obj)");
+  }
+#if PROX_WITH_GLTF
+  else if (ext == "gltf" || ext == "glb") {
+    // The whole default scene as one mesh, node transforms applied.
+    std::vector<io::GltfMesh> scene;
+    const Status s = io::load_gltf(path, io::GltfLoadOptions{}, scene);
+    if (!s) fail(s.message());
+    positions = std::move(scene.front().positions);
+    indices = std::move(scene.front().indices);
+  }
+#endif
+  else {
+    fail(path + ": unsupported file type '." + ext + "' (.obj, .gltf and .glb are read)");
   }
   Status s;
   const MeshInput input{positions.data(), static_cast<std::uint32_t>(positions.size() / 3), indices.data(),

@@ -1,6 +1,6 @@
 """Tests of the proxima command-line tool, run by ctest:
 
-    python3 cli_test.py PATH_TO_PROXIMA
+    python3 cli_test.py PATH_TO_PROXIMA PATH_TO_SHARED_ASSETS
 
 Every expected value is worked out by hand from the scene written here.
 """
@@ -44,6 +44,17 @@ class CliTest(unittest.TestCase):
         self.assertRegex(r.stdout, r"triangles\s+2 ")
         self.assertRegex(r.stdout, r"vertices\s+4 welded")
         self.assertRegex(r.stdout, r"boundary edges\s+4\b")
+
+    def test_info_reads_gltf(self):
+        # The MANIFEST's numbers for the Duck: 4,212 triangles, 1.655 x 1.54 x 1.153.
+        assets = os.environ.get("PROXIMA_ASSETS")
+        r = run("info", os.path.join(assets, "gltf", "Duck.glb"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertRegex(r.stdout, r"triangles\s+4212 ")
+        self.assertRegex(r.stdout, r"size 1\.65\d* x 1\.5[34]\d* x 1\.15\d*")
+        r = run("info", os.path.join(assets, "gltf", "Duck-Draco", "Duck.gltf"))
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("KHR_draco_mesh_compression", r.stderr)
 
     def test_lmd_between_single_triangles(self):
         # B is A turned over (180 degrees about x: normal -z, facing A),
@@ -176,4 +187,5 @@ class CliTest(unittest.TestCase):
 
 if __name__ == "__main__":
     PROXIMA = os.path.abspath(sys.argv.pop(1))
+    os.environ.setdefault("PROXIMA_ASSETS", os.path.abspath(sys.argv.pop(1)))
     unittest.main()

@@ -65,3 +65,33 @@ TEST(Visibility, NormalSignDoesNotMatter) {
 
 }  // namespace
 }  // namespace prox::geometry
+
+namespace prox::geometry {
+namespace {
+
+// A's vertex (1, 0, 0) and B's vertex (1.3, 0, 1) are a local minimum pair
+// when each vertex's cone of normals is wide enough: d = (0.3, 0, 1) is
+// 16.7 degrees off both normals. Straight projections miss each other, so
+// the paper's test culls the pair; the sound test must keep it when the
+// spreads are 30 degrees, and may cull it when they are 10.
+TEST(Visibility, SoundTestKeepsPairsTheConesCanReach) {
+  const Triangle a{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}};
+  const Triangle b{{Vec3(1.3, 0, 1), Vec3(1.3, 1, 1), Vec3(2.3, 0, 1)}};
+  const Vec3 up[3] = {Vec3(0, 0, 1), Vec3(0, 0, 1), Vec3(0, 0, 1)};
+  const Vec3 down[3] = {Vec3(0, 0, -1), Vec3(0, 0, -1), Vec3(0, 0, -1)};
+  EXPECT_FALSE(visibility_pretest(a, up, b, down));
+  const double deg = 3.14159265358979323846 / 180.0;
+  const double wide[3] = {30 * deg, 30 * deg, 30 * deg};
+  const double narrow[3] = {10 * deg, 10 * deg, 10 * deg};
+  const double none[3] = {0.0, 0.0, 0.0};
+  EXPECT_TRUE(visibility_pretest(a, up, wide, b, down, wide));
+  EXPECT_FALSE(visibility_pretest(a, up, narrow, b, down, narrow));
+  EXPECT_EQ(visibility_pretest(a, up, none, b, down, none), visibility_pretest(a, up, b, down));
+  // A cone reaching along the plane (tilt + spread >= 90 degrees) makes that
+  // direction pass; the pair then depends on the other direction alone.
+  const double flat[3] = {90 * deg, 90 * deg, 90 * deg};
+  EXPECT_TRUE(visibility_pretest(a, up, flat, b, down, flat));
+}
+
+}  // namespace
+}  // namespace prox::geometry

@@ -1,6 +1,9 @@
 #include "support/scenes.h"
 
 #include "io/obj.h"
+#if PROX_WITH_GLTF
+#include "io/gltf.h"
+#endif
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -32,6 +35,25 @@ std::shared_ptr<const Model> load_obj_model(const std::string& relative) {
   EXPECT_TRUE(status.is_ok()) << status.message() << " (the shared assets must sit beside the repository)";
   if (!status.is_ok()) return nullptr;
   return model_from_arrays(obj.positions, obj.indices);
+}
+
+std::shared_ptr<const Model> load_gltf_model(const std::string& relative, int part) {
+#if PROX_WITH_GLTF
+  std::vector<io::GltfMesh> meshes;
+  io::GltfLoadOptions options;
+  options.mode = part < 0 ? io::GltfSceneMode::Merged : io::GltfSceneMode::PerNode;
+  const Status status = io::load_gltf(asset_path(relative), options, meshes);
+  EXPECT_TRUE(status.is_ok()) << status.message();
+  if (!status.is_ok()) return nullptr;
+  const std::size_t i = part < 0 ? 0 : static_cast<std::size_t>(part);
+  EXPECT_LT(i, meshes.size());
+  if (i >= meshes.size()) return nullptr;
+  return model_from_arrays(meshes[i].positions, meshes[i].indices);
+#else
+  ADD_FAILURE() << "built without glTF support (PROX_WITH_GLTF=OFF): cannot load " << relative << " part "
+                << part;
+  return nullptr;
+#endif
 }
 
 PairQuery make_query(const Model& a, const Pose& pose_a, const Model& b, const Pose& pose_b, double cutoff) {

@@ -26,6 +26,9 @@ struct Model {
 // Loads an OBJ from the shared assets; fails the calling test (and returns
 // nullptr) when it cannot.
 std::shared_ptr<const Model> load_obj_model(const std::string& relative);
+// Loads a glTF scene from the shared assets: merged into one mesh, or only
+// node `part` of it (scene order). Fails the calling test when it cannot.
+std::shared_ptr<const Model> load_gltf_model(const std::string& relative, int part = -1);
 std::shared_ptr<const Model> model_from_arrays(const std::vector<double>& positions,
                                                const std::vector<std::uint32_t>& indices);
 

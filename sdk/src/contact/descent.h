@@ -29,6 +29,7 @@ struct NodePair {
   Vec3 axis_b;  // in A's frame
   double half_b;
   bool cone_b_unbounded;
+  bool two_sided_a, two_sided_b;  // open surfaces: each cone counts with its reverse
 };
 
 inline bool g1_rejects(const NodePair& p, double cutoff) {
@@ -40,7 +41,10 @@ inline bool g1_rejects(const NodePair& p, double cutoff) {
 // of B's exceeds both half-angles together.
 inline bool g2_rejects(const NodePair& p) {
   if (p.a.cone.unbounded() || p.cone_b_unbounded) return false;
-  const double opposite = kPi - angle_between(p.a.cone.axis, p.axis_b);
+  const double theta = angle_between(p.a.cone.axis, p.axis_b);
+  // Two-sided cones: the axes may point either way; the most favourable
+  // orientation decides.
+  const double opposite = (p.two_sided_a || p.two_sided_b) ? std::min(theta, kPi - theta) : kPi - theta;
   return opposite > p.a.cone.half_angle + p.half_b;
 }
 
@@ -54,8 +58,12 @@ inline bool g3_rejects(const NodePair& p) {
   if (!(dist > reach)) return false;  // overlapping spheres: lines go everywhere
   const double sigma = std::asin(reach / dist);
   const Vec3 dir = between / dist;
-  if (!p.a.cone.unbounded() && angle_between(dir, p.a.cone.axis) > sigma + p.a.cone.half_angle) return true;
-  if (!p.cone_b_unbounded && angle_between(-dir, p.axis_b) > sigma + p.half_b) return true;
+  auto misses = [sigma](const Vec3& d, const Vec3& axis, double half, bool two_sided) {
+    const double angle = angle_between(d, axis);
+    return (two_sided ? std::min(angle, kPi - angle) : angle) > sigma + half;
+  };
+  if (!p.a.cone.unbounded() && misses(dir, p.a.cone.axis, p.a.cone.half_angle, p.two_sided_a)) return true;
+  if (!p.cone_b_unbounded && misses(-dir, p.axis_b, p.half_b, p.two_sided_b)) return true;
   return false;
 }
 
@@ -80,7 +88,9 @@ void descend(const PairQuery& q, const Frames& frames, bool use_cones, GlobalSea
                      nb.radius,
                      frames.b_to_a.rotate(nb.cone.axis),
                      nb.cone.half_angle,
-                     nb.cone.unbounded()};
+                     nb.cone.unbounded(),
+                     ta.two_sided(),
+                     tb.two_sided()};
     if (g1_rejects(p, q.cutoff)) {
       ++stats.rejected_g1;
       continue;

@@ -59,15 +59,23 @@ void global_search_precise(const PairQuery& q, std::vector<LmdPair>& out, Global
   const Frames frames(q);
   const Mesh& ma = *q.mesh_a;
   const Mesh& mb = *q.mesh_b;
-  descend(q, frames, true, stats, [&](std::uint32_t ta, std::uint32_t tb) {
+  descend(q, frames, q.use_cones, stats, [&](std::uint32_t ta, std::uint32_t tb) {
     const Triangle a = ma.triangle(ta);
     const Triangle b = moved(mb.triangle(tb), frames.b_to_a);
     Vec3 na[3], nb[3];
+    double sa[3], sb[3];
     for (int k = 0; k < 3; ++k) {
-      na[k] = ma.vertex_normal(ma.indices(ta)[k]);
-      nb[k] = frames.b_to_a.rotate(mb.vertex_normal(mb.indices(tb)[k]));
+      const std::uint32_t va = ma.indices(ta)[k], vb = mb.indices(tb)[k];
+      na[k] = ma.vertex_normal(va);
+      nb[k] = frames.b_to_a.rotate(mb.vertex_normal(vb));
+      sa[k] = q.snch_a->vertex_spread(va);
+      sb[k] = q.snch_b->vertex_spread(vb);
     }
-    if (!geometry::visibility_pretest(a, na, b, nb)) {
+    const bool visible = q.visibility == PairQuery::Visibility::Off ? true
+                         : q.visibility == PairQuery::Visibility::Paper
+                             ? geometry::visibility_pretest(a, na, b, nb)
+                             : geometry::visibility_pretest(a, na, sa, b, nb, sb);
+    if (!visible) {
       ++stats.visibility_rejections;
       return;
     }

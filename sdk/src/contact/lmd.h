@@ -41,6 +41,12 @@ struct PairQuery {
   const Snch* snch_b = nullptr;
   Pose pose_b;
   double cutoff = 0.0;  // mesh units, >= 0
+  // The precise search's visibility pre-test: Sound (widened by each
+  // vertex's normal spread, docs/engine.md), Paper (as published: it loses
+  // contacts at sharp features), or Off. For measurement.
+  enum class Visibility { Sound, Paper, Off } visibility = Visibility::Sound;
+  // The normal-cone tests G2/G3 (switch off only to measure them).
+  bool use_cones = true;
 };
 
 }  // namespace prox

@@ -42,7 +42,10 @@ double longest_edge(const Triangle& t) {
 
 }  // namespace
 
-bool projects_onto(const Triangle& a, const Vec3 normals_a[3], const Triangle& b, double margin) {
+namespace {
+
+bool projects_onto_spread(const Triangle& a, const Vec3 normals_a[3], const double* spread_a,
+                          const Triangle& b, double margin) {
   const Vec3 n = glm::cross(b.v[1] - b.v[0], b.v[2] - b.v[0]);
   const double n_len = std::sqrt(glm::dot(n, n));
   if (!(n_len > 0.0)) return true;  // b has no plane
@@ -54,6 +57,7 @@ bool projects_onto(const Triangle& a, const Vec3 normals_a[3], const Triangle& b
 
   const double scale = std::max(longest_edge(a), longest_edge(b));
   Vec2 pa[3], pb[3];
+  double grow = 0.0;  // the largest deviation of a cone's hits from its axis's
   for (int i = 0; i < 3; ++i) {
     const Vec3 m = normals_a[i];
     const double m_len = std::sqrt(glm::dot(m, m));
@@ -61,19 +65,38 @@ bool projects_onto(const Triangle& a, const Vec3 normals_a[3], const Triangle& b
     // A normal (nearly) parallel to the plane projects to infinity: undefined,
     // so the pair passes. The cut-off is an angle (about 1e-6 rad), not a length.
     if (!(m_len > 0.0) || std::abs(along) <= 1e-6 * m_len) return true;
-    const double t = glm::dot(b.v[0] - a.v[i], unit_n) / along;
+    const double height = glm::dot(b.v[0] - a.v[i], unit_n);
+    if (spread_a) {
+      const double tilt = std::acos(std::min(1.0, std::abs(along) / m_len));
+      const double far = tilt + spread_a[i];
+      if (far >= 0.5 * 3.14159265358979323846 - 1e-6) return true;  // the cone reaches along the plane
+      grow = std::max(grow, std::abs(height) * (std::tan(far) - std::tan(tilt)));
+    }
+    const double t = height / along;
     const Vec3 projected = a.v[i] + t * m - b.v[0];
     pa[i] = Vec2(glm::dot(projected, u), glm::dot(projected, w));
     const Vec3 rb = b.v[i] - b.v[0];
     pb[i] = Vec2(glm::dot(rb, u), glm::dot(rb, w));
   }
-  const double slack = margin * scale;
+  const double slack = margin * scale + grow;
   return !separated_along_edges(pa, pb, slack) && !separated_along_edges(pb, pa, slack);
+}
+
+}  // namespace
+
+bool projects_onto(const Triangle& a, const Vec3 normals_a[3], const Triangle& b, double margin) {
+  return projects_onto_spread(a, normals_a, nullptr, b, margin);
 }
 
 bool visibility_pretest(const Triangle& a, const Vec3 normals_a[3], const Triangle& b,
                         const Vec3 normals_b[3], double margin) {
   return projects_onto(a, normals_a, b, margin) && projects_onto(b, normals_b, a, margin);
+}
+
+bool visibility_pretest(const Triangle& a, const Vec3 normals_a[3], const double spread_a[3],
+                        const Triangle& b, const Vec3 normals_b[3], const double spread_b[3], double margin) {
+  return projects_onto_spread(a, normals_a, spread_a, b, margin) &&
+         projects_onto_spread(b, normals_b, spread_b, a, margin);
 }
 
 }  // namespace prox::geometry

@@ -22,4 +22,19 @@ bool visibility_pretest(const Triangle& a, const Vec3 normals_a[3], const Triang
 // plane of `b`, overlap `b`?
 bool projects_onto(const Triangle& a, const Vec3 normals_a[3], const Triangle& b, double margin);
 
+// The sound form Proxima uses. `spread_a[i]` is the half-angle (radians) of
+// the cone of directions in which a closest pair can leave the surface at
+// vertex i: the largest angle between its vertex normal and the normals of
+// the faces around it (pi/2 or more: unknown, the pair passes). Projecting
+// along any direction of that cone lands within h (tan(theta + spread) -
+// tan(theta)) of the projection along the vertex normal (h: the vertex's
+// distance to the plane, theta: the normal's tilt from the plane's normal),
+// and projection along a fixed direction is affine, so growing the 2D test by
+// the largest such radius keeps every pair that can be a local minimum. With
+// zero spreads it is the paper's test. See docs/engine.md for what the
+// paper's test loses at sharp features.
+bool visibility_pretest(const Triangle& a, const Vec3 normals_a[3], const double spread_a[3],
+                        const Triangle& b, const Vec3 normals_b[3], const double spread_b[3],
+                        double margin = 1e-9);
+
 }  // namespace prox::geometry

@@ -169,8 +169,23 @@ Snch::Snch(const Mesh& mesh) {
     node.radius = s.radius;
     node.cone = merge(a.cone, b.cone);
   }
+  vertex_spread_.assign(mesh.vertex_count(), 0.5 * kPi);
+  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
+    const Vec3& normal = mesh.vertex_normal(v);
+    if (vertex_is_open(mesh, v)) {
+      two_sided_ = true;
+      continue;
+    }
+    if (!(glm::dot(normal, normal) > 0.0)) continue;
+    double spread = 0.0;
+    for (const std::uint32_t* t = mesh.vertex_triangles_begin(v); t != mesh.vertex_triangles_end(v); ++t) {
+      const Vec3& f = mesh.face_normal(*t);
+      if (glm::dot(f, f) > 0.0) spread = std::max(spread, angle_between(normal, f));
+    }
+    vertex_spread_[v] = std::min(spread, 0.5 * kPi);
+  }
   stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
-  stats_.memory_bytes = nodes_.capacity() * sizeof(SnchNode);
+  stats_.memory_bytes = nodes_.capacity() * sizeof(SnchNode) + vertex_spread_.capacity() * sizeof(double);
   stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -44,6 +44,16 @@ class Snch {
   const SnchNode& root() const { return nodes_[0]; }
   const SnchNode& node(std::uint32_t i) const { return nodes_[i]; }
   const SnchStats& stats() const { return stats_; }
+  // False for a closed, consistently wound surface, which has an inside: a
+  // contact can only reach it from outside, along its normals. True for an
+  // open, non-manifold or folded surface, which can be touched from either
+  // side: the searches then take each normal cone together with its reverse.
+  bool two_sided() const { return two_sided_; }
+  // The half-angle (radians) of the cone of directions in which a closest
+  // pair can leave the surface at vertex v, about its vertex normal: the
+  // largest angle to a face normal around it; pi/2 where the surface is open
+  // or folded. Used by the visibility pre-test.
+  double vertex_spread(std::uint32_t v) const { return vertex_spread_[v]; }
 
   // The leaf cone of triangle t (also stored in its leaf): it bounds the
   // normals of every triangle sharing a vertex with t, or holds every
@@ -52,6 +62,8 @@ class Snch {
 
  private:
   std::vector<SnchNode> nodes_;
+  std::vector<double> vertex_spread_;
+  bool two_sided_ = false;
   SnchStats stats_;
 };
 

@@ -1,0 +1,901 @@
+#include "io/gltf.h"
+
+// tinygltf is compiled here and nowhere else, without any image support: no
+// stb_image, external images are not even opened, embedded ones go to a no-op
+// callback. External buffers are read through the file callbacks below, not
+// tinygltf's own. (TINYGLTF_NO_FS would drop those, but does not compile in
+// 2.7.) Its header lives in a system include directory, so its warnings do not
+// reach -Werror.
+#define TINYGLTF_IMPLEMENTATION
+#define TINYGLTF_NO_STB_IMAGE
+#define TINYGLTF_NO_STB_IMAGE_WRITE
+#define TINYGLTF_NO_EXTERNAL_IMAGE
+#include <tiny_gltf.h>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <new>
+#include <system_error>
+#include <utility>
+
+namespace prox::io {
+namespace {
+
+using Json = nlohmann::json;
+
+constexpr std::uint64_t kMaxU32 = 0xFFFFFFFFu;
+constexpr int kMaxJsonDepth = 256;  // tinygltf parses extras recursively
+
+// ---------------------------------------------------------------------------
+// Files
+
+Status read_file(const std::string& path, std::vector<unsigned char>& bytes) {
+  bytes.clear();
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    return {StatusCode::IoError, "cannot read '" + path + "': not a regular file"};
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr)
+    return {StatusCode::IoError, "cannot open '" + path + "': " + std::generic_category().message(errno)};
+  unsigned char buffer[1 << 16];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, file)) > 0;)
+    bytes.insert(bytes.end(), buffer, buffer + n);
+  const bool failed = std::ferror(file) != 0;
+  const int error = errno;
+  std::fclose(file);
+  if (failed)
+    return {StatusCode::IoError, "cannot read '" + path + "': " +
+                                     (error != 0 ? std::generic_category().message(error) : "read error")};
+  return Status::ok();
+}
+
+// tinygltf's file system: external buffers only (images are never opened).
+struct FsContext {
+  std::string io_error;  // the first read failure, for an IoError
+};
+
+// Always "exists", so that tinygltf tries only the path beside the .gltf (not
+// the working directory) and the read below reports the real failure.
+bool fs_file_exists(const std::string&, void*) { return true; }
+std::string fs_expand_path(const std::string& path, void*) { return path; }
+bool fs_read_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  const Status status = read_file(path, *out);
+  if (status) return true;
+  auto* context = static_cast<FsContext*>(user);
+  if (context->io_error.empty()) context->io_error = status.message();
+  if (err != nullptr) *err += status.message() + "\n";
+  return false;
+}
+bool fs_write_file(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err != nullptr) *err += "writing is disabled\n";
+  return false;
+}
+// Images carry nothing Proxima uses: accept them undecoded.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
+                void*) {
+  return true;
+}
+
+std::uint32_t read_u32le(const unsigned char* p) {
+  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+         static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
+}
+
+std::string trim(std::string s) {
+  while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
+  return s;
+}
+
+// ---------------------------------------------------------------------------
+// The GLB container, checked completely before tinygltf sees it (tinygltf
+// 2.7 lets a BIN chunk header claim up to 8 bytes past the end).
+
+constexpr std::uint32_t kChunkJson = 0x4E4F534A;
+constexpr std::uint32_t kChunkBin = 0x004E4942;
+
+struct GlbLayout {
+  std::size_t length = 0;  // the container's declared length (<= the file size)
+  std::size_t json_offset = 0;
+  std::size_t json_size = 0;
+};
+
+Status check_glb(const std::vector<unsigned char>& bytes, const std::string& name, GlbLayout& glb) {
+  const auto error = [&](const std::string& message) -> Status {
+    return {StatusCode::ParseError, name + ": " + message};
+  };
+  const std::size_t size = bytes.size();
+  if (size < 20)
+    return error("truncated GLB: " + std::to_string(size) + " bytes, a header and chunk need 20");
+  const std::uint32_t version = read_u32le(&bytes[4]);
+  if (version != 2)
+    return {StatusCode::Unsupported,
+            name + ": GLB container version " + std::to_string(version) + " (only version 2 is supported)"};
+  const std::uint32_t length = read_u32le(&bytes[8]);
+  if (length > size)
+    return error("truncated GLB: the header declares " + std::to_string(length) + " bytes, the file has " +
+                 std::to_string(size));
+  if (length < 20) return error("GLB header declares a length of " + std::to_string(length) + " bytes");
+  const std::uint64_t json_size = read_u32le(&bytes[12]);
+  if (read_u32le(&bytes[16]) != kChunkJson) return error("the first GLB chunk is not JSON");
+  if (json_size == 0 || 20 + json_size > length)
+    return error("the GLB JSON chunk (" + std::to_string(json_size) +
+                 " bytes) does not fit in the container (" + std::to_string(length) + " bytes)");
+  const std::uint64_t bin_header = 20 + json_size;
+  if (bin_header < length) {  // a second chunk follows
+    if (bin_header + 8 > length) return error("truncated GLB: the second chunk header is cut off");
+    const std::uint64_t bin_size = read_u32le(&bytes[bin_header]);
+    if (read_u32le(&bytes[bin_header + 4]) != kChunkBin) return error("the second GLB chunk is not BIN");
+    if (bin_header + 8 + bin_size > length)
+      return error("truncated GLB: the BIN chunk declares " + std::to_string(bin_size) + " bytes, " +
+                   std::to_string(length - bin_header - 8) + " are left");
+  }
+  glb.length = length;
+  glb.json_offset = 20;
+  glb.json_size = static_cast<std::size_t>(json_size);
+  return Status::ok();
+}
+
+// ---------------------------------------------------------------------------
+// A first look at the JSON, before tinygltf: the things tinygltf would get
+// wrong or reject with a less useful message.
+
+// Nesting depth outside strings; tinygltf recurses once per level.
+int json_depth(const char* text, std::size_t size) {
+  int depth = 0;
+  int max_depth = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < size; ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      max_depth = std::max(max_depth, ++depth);
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return max_depth;
+}
+
+// Extensions that change nothing about triangle positions: a file requiring
+// only these loads (its textures and materials are ignored anyway).
+bool geometry_neutral(const std::string& extension) {
+  return extension == "KHR_mesh_quantization" ||  // decoded below
+         extension == "KHR_texture_transform" || extension.rfind("KHR_materials_", 0) == 0 ||
+         extension == "KHR_texture_basisu" || extension == "EXT_texture_webp" ||
+         extension == "EXT_texture_avif";
+}
+
+// tinygltf's reading of an integer property (GetInt): a JSON integer, cast.
+bool json_int(const Json& object, const char* key, int& value) {
+  const auto it = object.find(key);
+  if (it == object.end() || !it->is_number_integer()) return false;
+  value = static_cast<int>(it->get<std::int64_t>());
+  return true;
+}
+// tinygltf's reading of an unsigned property.
+std::uint64_t json_unsigned(const Json& object, const char* key, std::uint64_t fallback) {
+  const auto it = object.find(key);
+  return it != object.end() && it->is_number_unsigned() ? it->get<std::uint64_t>() : fallback;
+}
+
+Status precheck_json(const char* text, std::size_t size, const std::string& name) {
+  const auto error = [&](const std::string& message) -> Status {
+    return {StatusCode::ParseError, name + ": " + message};
+  };
+  if (json_depth(text, size) > kMaxJsonDepth)
+    return error("JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+  Json root;
+  try {
+    root = Json::parse(text, text + size);
+  } catch (const Json::exception& e) {
+    return error(std::string("invalid JSON: ") + e.what());
+  }
+  if (!root.is_object()) return error("the JSON root is not an object");
+
+  const auto asset = root.find("asset");
+  if (asset == root.end() || !asset->is_object() || !asset->contains("version") ||
+      !(*asset)["version"].is_string())
+    return error("no asset.version: not a glTF file");
+  const std::string version = (*asset)["version"].get<std::string>();
+  if (version.substr(0, version.find('.')) != "2")
+    return {StatusCode::Unsupported, name + ": glTF version " + version + " (only 2.x is supported)"};
+
+  const auto required = root.find("extensionsRequired");
+  if (required != root.end()) {
+    if (!required->is_array()) return error("extensionsRequired is not an array");
+    std::string unsupported;
+    for (const Json& extension : *required) {
+      if (!extension.is_string()) return error("extensionsRequired holds a non-string");
+      const std::string& e = extension.get_ref<const std::string&>();
+      if (!geometry_neutral(e)) unsupported += (unsupported.empty() ? "" : ", ") + e;
+    }
+    if (!unsupported.empty())
+      return {StatusCode::Unsupported,
+              name + ": requires the glTF extension(s) " + unsupported + ", which Proxima cannot decode"};
+  }
+
+  // tinygltf hands an embedded image's bytes to the image callback as
+  // &buffer.data[bufferView.byteOffset] without checking the view against the
+  // buffer (it checks only the indices); a buffer's data always has its
+  // byteLength, so check against that.
+  const auto images = root.find("images");
+  const auto views = root.find("bufferViews");
+  const auto buffers = root.find("buffers");
+  if (images != root.end() && images->is_array() && views != root.end() && views->is_array() &&
+      buffers != root.end() && buffers->is_array()) {
+    for (std::size_t i = 0; i < images->size(); ++i) {
+      const Json& image = (*images)[i];
+      int view_index = -1;
+      if (!image.is_object() || !json_int(image, "bufferView", view_index) || view_index < 0 ||
+          static_cast<std::size_t>(view_index) >= views->size())
+        continue;  // tinygltf rejects or ignores these itself
+      const Json& view = (*views)[static_cast<std::size_t>(view_index)];
+      int buffer_index = -1;
+      if (!view.is_object() || !json_int(view, "buffer", buffer_index) || buffer_index < 0 ||
+          static_cast<std::size_t>(buffer_index) >= buffers->size() ||
+          !(*buffers)[static_cast<std::size_t>(buffer_index)].is_object())
+        continue;
+      const std::uint64_t buffer_length =
+          json_unsigned((*buffers)[static_cast<std::size_t>(buffer_index)], "byteLength", 0);
+      const std::uint64_t offset = json_unsigned(view, "byteOffset", 0);
+      const std::uint64_t length = json_unsigned(view, "byteLength", 0);
+      if (offset >= buffer_length || length > buffer_length - offset)
+        return error("image " + std::to_string(i) + ": bufferView " + std::to_string(view_index) +
+                     " (byteOffset " + std::to_string(offset) + ", byteLength " + std::to_string(length) +
+                     ") lies outside buffer " + std::to_string(buffer_index) + " (" +
+                     std::to_string(buffer_length) + " bytes)");
+    }
+  }
+  return Status::ok();
+}
+
+// ---------------------------------------------------------------------------
+// Accessors
+
+const char* component_type_name(int type) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+      return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+      return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_INT:
+      return "INT (not a glTF 2.0 type)";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+      return "UNSIGNED_INT";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+      return "FLOAT";
+    case TINYGLTF_COMPONENT_TYPE_DOUBLE:
+      return "DOUBLE (not a glTF 2.0 type)";
+    default:
+      return "an unknown component type";
+  }
+}
+
+const char* type_name(int type) {
+  switch (type) {
+    case TINYGLTF_TYPE_SCALAR:
+      return "SCALAR";
+    case TINYGLTF_TYPE_VEC2:
+      return "VEC2";
+    case TINYGLTF_TYPE_VEC3:
+      return "VEC3";
+    case TINYGLTF_TYPE_VEC4:
+      return "VEC4";
+    case TINYGLTF_TYPE_MAT2:
+      return "MAT2";
+    case TINYGLTF_TYPE_MAT3:
+      return "MAT3";
+    case TINYGLTF_TYPE_MAT4:
+      return "MAT4";
+    default:
+      return "an unknown type";
+  }
+}
+
+std::size_t component_size(int type) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+      return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+      return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+      return 4;
+    default:
+      return 0;
+  }
+}
+
+// One little-endian component; normalized integers map to [-1, 1] or [0, 1]
+// by the glTF 2.0 formulas (signed: max(c / (2^(n-1) - 1), -1)).
+double read_component(const unsigned char* p, int type, bool normalized) {
+  switch (type) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+      const double c = static_cast<std::int8_t>(p[0]);
+      return normalized ? std::max(c / 127.0, -1.0) : c;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+      const double c = p[0];
+      return normalized ? c / 255.0 : c;
+    }
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+      const double c = static_cast<std::int16_t>(static_cast<std::uint16_t>(p[0] | p[1] << 8));
+      return normalized ? std::max(c / 32767.0, -1.0) : c;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+      const double c = static_cast<std::uint16_t>(p[0] | p[1] << 8);
+      return normalized ? c / 65535.0 : c;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+      return read_u32le(p);
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+      const std::uint32_t bits = read_u32le(p);
+      float f;
+      std::memcpy(&f, &bits, sizeof f);
+      return static_cast<double>(f);
+    }
+    default:
+      return 0.0;
+  }
+}
+
+enum class AccessorUse { Position, Index };
+
+// ---------------------------------------------------------------------------
+// The scene
+
+struct LocalMesh {  // one mesh's triangles in its own coordinates
+  bool decoded = false;
+  std::vector<glm::dvec3> positions;
+  std::vector<std::uint32_t> indices;
+};
+
+class Decoder {
+ public:
+  Decoder(const tinygltf::Model& model, const std::string& name) : model_(model), name_(name) {}
+
+  Status run(GltfSceneMode mode, const std::string& stem, std::vector<GltfMesh>& out) {
+    std::vector<int> roots;
+    Status status = scene_roots(roots);
+    if (!status) return status;
+    meshes_.assign(model_.meshes.size(), LocalMesh{});
+    std::vector<char> visited(model_.nodes.size(), 0);
+    if (mode == GltfSceneMode::Merged) {
+      out.emplace_back();
+      out.back().name = stem;
+    }
+
+    // Depth first, in the file's order, without recursion (hierarchies can be
+    // deep). Each entry holds its parent's world transform. Nodes are marked
+    // when pushed, so the stack never holds more than every node once.
+    std::vector<std::pair<int, glm::dmat4>> stack;
+    const auto push = [&](int index, const glm::dmat4& parent) -> Status {
+      if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size())
+        return error("node " + std::to_string(index) + " does not exist (the file has " +
+                     std::to_string(model_.nodes.size()) + " nodes)");
+      if (visited[static_cast<std::size_t>(index)])
+        return error(
+            "node " + std::to_string(index) +
+            " is reached twice from the scene: the node hierarchy has a cycle or a node with two parents");
+      visited[static_cast<std::size_t>(index)] = 1;
+      stack.emplace_back(index, parent);
+      return Status::ok();
+    };
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it) {
+      status = push(*it, glm::dmat4(1.0));
+      if (!status) return status;
+    }
+    while (!stack.empty()) {
+      const auto [index, parent] = stack.back();
+      stack.pop_back();
+      const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
+      glm::dmat4 local;
+      status = local_transform(index, local);
+      if (!status) return status;
+      const glm::dmat4 world = parent * local;
+      if (node.mesh != -1) {
+        status = instantiate(index, world, mode, out);
+        if (!status) return status;
+      }
+      for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) {
+        status = push(*it, world);
+        if (!status) return status;
+      }
+    }
+
+    std::size_t triangles = 0;
+    for (const GltfMesh& mesh : out) triangles += mesh.indices.size() / 3;
+    if (triangles == 0) {
+      out.clear();
+      return {StatusCode::Unsupported,
+              name_ + ": the scene has no triangles (point and line primitives are not read)"};
+    }
+    return Status::ok();
+  }
+
+ private:
+  Status error(const std::string& message) const { return {StatusCode::ParseError, name_ + ": " + message}; }
+
+  // The default scene, else scene 0, else (a file without scenes) every node
+  // that is nobody's child.
+  Status scene_roots(std::vector<int>& roots) const {
+    if (!model_.scenes.empty()) {
+      const int scene = model_.defaultScene != -1 ? model_.defaultScene : 0;
+      if (scene < 0 || static_cast<std::size_t>(scene) >= model_.scenes.size())
+        return error("the default scene " + std::to_string(scene) + " does not exist (the file has " +
+                     std::to_string(model_.scenes.size()) + " scenes)");
+      roots = model_.scenes[static_cast<std::size_t>(scene)].nodes;
+      return Status::ok();
+    }
+    std::vector<char> is_child(model_.nodes.size(), 0);
+    for (std::size_t i = 0; i < model_.nodes.size(); ++i)
+      for (const int child : model_.nodes[i].children) {
+        if (child < 0 || static_cast<std::size_t>(child) >= model_.nodes.size())
+          return error("node " + std::to_string(i) + " has a child " + std::to_string(child) +
+                       " that does not exist");
+        is_child[static_cast<std::size_t>(child)] = 1;
+      }
+    for (std::size_t i = 0; i < model_.nodes.size(); ++i)
+      if (!is_child[i]) roots.push_back(static_cast<int>(i));
+    return Status::ok();
+  }
+
+  // glTF matrices are column-major, as glm's; TRS is T * R * S with the
+  // rotation a unit quaternion (x, y, z, w), normalized here.
+  Status local_transform(int index, glm::dmat4& m) const {
+    const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
+    const std::string where =
+        "node " + std::to_string(index) + (node.name.empty() ? "" : " '" + node.name + "'");
+    const auto finite = [](const std::vector<double>& v) {
+      for (const double x : v)
+        if (!std::isfinite(x)) return false;
+      return true;
+    };
+    m = glm::dmat4(1.0);
+    if (!node.matrix.empty()) {
+      if (node.matrix.size() != 16)
+        return error(where + ": matrix has " + std::to_string(node.matrix.size()) + " values; 16 are needed");
+      if (!finite(node.matrix)) return error(where + ": matrix has a non-finite value");
+      for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) m[c][r] = node.matrix[static_cast<std::size_t>(4 * c + r)];
+      // A node matrix must decompose into T * R * S, so its last row is
+      // (0, 0, 0, 1); allow only rounding noise and then make it exact.
+      constexpr double kTolerance = 1e-6;
+      if (std::abs(m[0][3]) > kTolerance || std::abs(m[1][3]) > kTolerance ||
+          std::abs(m[2][3]) > kTolerance || std::abs(m[3][3] - 1.0) > kTolerance)
+        return error(where + ": matrix is not affine (its last row is not 0, 0, 0, 1)");
+      m[0][3] = m[1][3] = m[2][3] = 0.0;
+      m[3][3] = 1.0;
+      return Status::ok();
+    }
+    const auto check = [&](const std::vector<double>& v, std::size_t n, const char* what) -> Status {
+      if (!v.empty() && v.size() != n)
+        return error(where + ": " + what + " has " + std::to_string(v.size()) + " values; " +
+                     std::to_string(n) + " are needed");
+      if (!finite(v)) return error(where + ": " + what + " has a non-finite value");
+      return Status::ok();
+    };
+    Status status = check(node.translation, 3, "translation");
+    if (status) status = check(node.rotation, 4, "rotation");
+    if (status) status = check(node.scale, 3, "scale");
+    if (!status) return status;
+    glm::dvec3 scale(1.0);
+    if (!node.scale.empty()) scale = {node.scale[0], node.scale[1], node.scale[2]};
+    if (!node.rotation.empty()) {
+      double x = node.rotation[0], y = node.rotation[1], z = node.rotation[2], w = node.rotation[3];
+      const double norm = std::sqrt(x * x + y * y + z * z + w * w);
+      if (!(norm > 0.0) || !std::isfinite(norm))
+        return error(where + ": rotation quaternion has zero or non-finite length");
+      x /= norm, y /= norm, z /= norm, w /= norm;
+      // Column c is the image of axis c.
+      m[0] = glm::dvec4(1 - 2 * (y * y + z * z), 2 * (x * y + z * w), 2 * (x * z - y * w), 0.0);
+      m[1] = glm::dvec4(2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w), 0.0);
+      m[2] = glm::dvec4(2 * (x * z + y * w), 2 * (y * z - x * w), 1 - 2 * (x * x + y * y), 0.0);
+    }
+    m[0] *= scale.x;
+    m[1] *= scale.y;
+    m[2] *= scale.z;
+    if (!node.translation.empty())
+      m[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+    return Status::ok();
+  }
+
+  // The mesh of node `index`, transformed by `world`, appended to `out`.
+  Status instantiate(int index, const glm::dmat4& world, GltfSceneMode mode, std::vector<GltfMesh>& out) {
+    const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
+    if (node.mesh < 0 || static_cast<std::size_t>(node.mesh) >= model_.meshes.size())
+      return error("node " + std::to_string(index) + " refers to mesh " + std::to_string(node.mesh) +
+                   ", which does not exist (the file has " + std::to_string(model_.meshes.size()) +
+                   " meshes)");
+    LocalMesh& mesh = meshes_[static_cast<std::size_t>(node.mesh)];
+    if (!mesh.decoded) {
+      const Status status = decode_mesh(node.mesh, mesh);
+      if (!status) return status;
+      mesh.decoded = true;
+    }
+    if (mesh.indices.empty()) return Status::ok();  // only points or lines
+
+    if (mode == GltfSceneMode::PerNode) {
+      out.emplace_back();
+      const std::string& mesh_name = model_.meshes[static_cast<std::size_t>(node.mesh)].name;
+      out.back().name = !node.name.empty()   ? node.name
+                        : !mesh_name.empty() ? mesh_name
+                                             : "node " + std::to_string(index);
+    }
+    GltfMesh& target = out.back();
+    const std::size_t base = target.positions.size() / 3;
+    if (base == 0) {  // a fresh soup (per node); merged ones grow geometrically
+      target.positions.reserve(3 * mesh.positions.size());
+      target.indices.reserve(mesh.indices.size());
+    }
+    if (base + mesh.positions.size() > kMaxU32)
+      return {StatusCode::Unsupported,
+              name_ + ": the scene has more than 4294967295 vertices; load it per node"};
+    for (const glm::dvec3& p : mesh.positions) {
+      const glm::dvec4 q = world * glm::dvec4(p, 1.0);
+      if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
+        return error("node " + std::to_string(index) + ": a vertex of mesh " + std::to_string(node.mesh) +
+                     " overflows to infinity under the node transforms");
+      target.positions.insert(target.positions.end(), {q.x, q.y, q.z});
+    }
+    for (const std::uint32_t i : mesh.indices) target.indices.push_back(static_cast<std::uint32_t>(base + i));
+    return Status::ok();
+  }
+
+  // Every triangle primitive of a mesh, in the mesh's coordinates.
+  //
+  // Skinned meshes are taken as authored (their bind-pose coordinates) and
+  // placed by their node's transform like any other mesh; joints, weights,
+  // inverse bind matrices, morph targets and animations are not read. This is
+  // not glTF's rest pose: glTF ignores a skinned mesh node's transform and
+  // places the vertices by joint world matrix x inverse bind matrix. The two
+  // agree when the inverse bind matrices were made from the mesh node's world
+  // transform; in RiggedSimple.glb they differ by the Armature node's quarter
+  // turn about the cylinder's axis. A skinned mesh quantized by
+  // KHR_mesh_quantization keeps its dequantization in the inverse bind
+  // matrices, so it comes out in quantized units.
+  Status decode_mesh(int mesh_index, LocalMesh& mesh) const {
+    const tinygltf::Mesh& source = model_.meshes[static_cast<std::size_t>(mesh_index)];
+    // POSITION accessor -> (its first vertex in `mesh`, its vertex count).
+    std::map<int, std::pair<std::uint32_t, std::size_t>> position_base;
+    std::vector<double> values;
+    std::vector<std::uint32_t> vertex;  // the primitive's vertex sequence
+    for (std::size_t p = 0; p < source.primitives.size(); ++p) {
+      const tinygltf::Primitive& primitive = source.primitives[p];
+      const std::string where = "mesh " + std::to_string(mesh_index) +
+                                (source.name.empty() ? "" : " '" + source.name + "'") + " primitive " +
+                                std::to_string(p);
+      // POINTS (0), LINES (1), LINE_LOOP (2) and LINE_STRIP (3) have no
+      // surface to touch: skipped without reading their accessors.
+      if (primitive.mode >= TINYGLTF_MODE_POINTS && primitive.mode <= TINYGLTF_MODE_LINE_STRIP) continue;
+      if (primitive.mode < TINYGLTF_MODE_TRIANGLES || primitive.mode > TINYGLTF_MODE_TRIANGLE_FAN)
+        return error(where + ": unknown mode " + std::to_string(primitive.mode));
+      // glTF: a primitive without POSITION is not rendered; nothing to read.
+      const auto position = primitive.attributes.find("POSITION");
+      if (position == primitive.attributes.end()) continue;
+
+      // Primitives sharing a POSITION accessor share its vertices.
+      auto found = position_base.find(position->second);
+      if (found == position_base.end()) {
+        const Status status =
+            read_accessor(position->second, where + ": POSITION", AccessorUse::Position, values);
+        if (!status) return status;
+        const std::size_t count = values.size() / 3;
+        if (mesh.positions.size() + count > kMaxU32)
+          return {StatusCode::Unsupported,
+                  name_ + ": " + where + ": more than 4294967295 vertices in one mesh"};
+        for (std::size_t v = 0; v < count; ++v) {
+          const glm::dvec3 x(values[3 * v], values[3 * v + 1], values[3 * v + 2]);
+          if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z))
+            return error(where + ": POSITION accessor " + std::to_string(position->second) + ": vertex " +
+                         std::to_string(v) + " has a non-finite coordinate");
+        }
+        found = position_base
+                    .emplace(position->second,
+                             std::make_pair(static_cast<std::uint32_t>(mesh.positions.size()), count))
+                    .first;
+        for (std::size_t v = 0; v < count; ++v)
+          mesh.positions.emplace_back(values[3 * v], values[3 * v + 1], values[3 * v + 2]);
+      }
+      const std::uint32_t base = found->second.first;
+      const std::size_t vertex_count = found->second.second;
+
+      vertex.clear();
+      if (primitive.indices != -1) {
+        const Status status =
+            read_accessor(primitive.indices, where + ": indices", AccessorUse::Index, values);
+        if (!status) return status;
+        vertex.reserve(values.size());
+        for (std::size_t k = 0; k < values.size(); ++k) {
+          if (values[k] >= static_cast<double>(vertex_count))
+            return error(where + ": indices accessor " + std::to_string(primitive.indices) + ": index " +
+                         std::to_string(static_cast<std::uint64_t>(values[k])) + " (entry " +
+                         std::to_string(k) + ") is out of range: POSITION accessor " +
+                         std::to_string(position->second) + " has " + std::to_string(vertex_count) +
+                         " vertices");
+          vertex.push_back(static_cast<std::uint32_t>(values[k]));
+        }
+      } else {
+        vertex.resize(vertex_count);
+        for (std::size_t k = 0; k < vertex_count; ++k) vertex[k] = static_cast<std::uint32_t>(k);
+      }
+
+      const std::size_t n = vertex.size();
+      const auto add = [&](std::size_t a, std::size_t b, std::size_t c) {
+        mesh.indices.insert(mesh.indices.end(), {base + vertex[a], base + vertex[b], base + vertex[c]});
+      };
+      switch (primitive.mode) {
+        case TINYGLTF_MODE_TRIANGLES:
+          if (n % 3 != 0)
+            return error(where + ": " + std::to_string(n) + " vertices for TRIANGLES, not a multiple of 3");
+          for (std::size_t i = 0; i < n; i += 3) add(i, i + 1, i + 2);
+          break;
+        case TINYGLTF_MODE_TRIANGLE_STRIP:  // every other triangle is reversed to keep the winding
+          for (std::size_t i = 0; i + 2 < n; ++i) {
+            if (i % 2 == 0)
+              add(i, i + 1, i + 2);
+            else
+              add(i, i + 2, i + 1);
+          }
+          break;
+        default:  // TRIANGLE_FAN
+          for (std::size_t i = 0; i + 2 < n; ++i) add(i + 1, i + 2, 0);
+          break;
+      }
+    }
+    return Status::ok();
+  }
+
+  // A view's bytes, checked to lie inside its buffer.
+  Status buffer_view(int index, const std::string& where, const unsigned char*& data,
+                     std::size_t& length) const {
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.bufferViews.size())
+      return error(where + ": bufferView " + std::to_string(index) + " does not exist (the file has " +
+                   std::to_string(model_.bufferViews.size()) + ")");
+    const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(index)];
+    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model_.buffers.size())
+      return error(where + ": bufferView " + std::to_string(index) + " refers to buffer " +
+                   std::to_string(view.buffer) + ", which does not exist");
+    const std::vector<unsigned char>& buffer = model_.buffers[static_cast<std::size_t>(view.buffer)].data;
+    if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset)
+      return error(where + ": bufferView " + std::to_string(index) + " (byteOffset " +
+                   std::to_string(view.byteOffset) + ", byteLength " + std::to_string(view.byteLength) +
+                   ") runs past the end of buffer " + std::to_string(view.buffer) + " (" +
+                   std::to_string(buffer.size()) + " bytes)");
+    data = buffer.data() + view.byteOffset;
+    length = view.byteLength;
+    return Status::ok();
+  }
+
+  // `count` elements of `element` bytes, `stride` apart from `offset`, must
+  // lie within `length` bytes: offset + (count - 1) * stride + element.
+  Status check_span(std::uint64_t offset, std::uint64_t count, std::uint64_t stride, std::uint64_t element,
+                    std::uint64_t length, const std::string& what) const {
+    if (count == 0) return Status::ok();
+    if (offset > length || element > length - offset || count - 1 > (length - offset - element) / stride)
+      return error(what + ": " + std::to_string(count) + " elements of " + std::to_string(element) +
+                   " bytes, " + std::to_string(stride) + " apart from byteOffset " + std::to_string(offset) +
+                   ", run past the end of the bufferView (" + std::to_string(length) + " bytes)");
+    return Status::ok();
+  }
+
+  // Accessor `index` as count * components doubles: the base bufferView (or
+  // zeros without one), then the sparse substitutions.
+  Status read_accessor(int index, const std::string& where, AccessorUse use, std::vector<double>& out) const {
+    out.clear();
+    const char* role = use == AccessorUse::Position ? "POSITION" : "indices";
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size())
+      return error(where + ": accessor " + std::to_string(index) + " does not exist (the file has " +
+                   std::to_string(model_.accessors.size()) + ")");
+    const tinygltf::Accessor& accessor = model_.accessors[static_cast<std::size_t>(index)];
+    const std::string what = where + " accessor " + std::to_string(index);
+    const int ct = accessor.componentType;
+
+    std::size_t components = 0;
+    bool type_ok = false;
+    if (use == AccessorUse::Position) {
+      components = 3;
+      // Float, or (KHR_mesh_quantization) 8- and 16-bit integers, normalized
+      // or not. Accepted whether or not the file declares the extension: the
+      // values are unambiguous. The extension does not allow UNSIGNED_INT.
+      type_ok = accessor.type == TINYGLTF_TYPE_VEC3 &&
+                (ct == TINYGLTF_COMPONENT_TYPE_FLOAT || ct == TINYGLTF_COMPONENT_TYPE_BYTE ||
+                 ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || ct == TINYGLTF_COMPONENT_TYPE_SHORT ||
+                 ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) &&
+                !(accessor.normalized && ct == TINYGLTF_COMPONENT_TYPE_FLOAT);
+    } else {
+      components = 1;
+      type_ok =
+          accessor.type == TINYGLTF_TYPE_SCALAR &&
+          (ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
+           ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) &&
+          !accessor.normalized;
+    }
+    if (!type_ok)
+      return error(what + ": " + type_name(accessor.type) + " of " +
+                   std::string(accessor.normalized ? "normalized " : "") + component_type_name(ct) +
+                   " is not a valid type for " + role +
+                   (use == AccessorUse::Position
+                        ? " (VEC3 of FLOAT, or of BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT with "
+                          "KHR_mesh_quantization)"
+                        : " (SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT)"));
+    const std::size_t size = component_size(ct);
+    const std::size_t element = size * components;
+    const std::uint64_t count = accessor.count;
+    if (use == AccessorUse::Position && count > kMaxU32)
+      return {StatusCode::Unsupported, name_ + ": " + what + ": more than 4294967295 vertices"};
+    if (accessor.bufferView == -1 && !accessor.sparse.isSparse && count > 0)
+      return error(what + ": has neither a bufferView nor sparse values");
+
+    const unsigned char* first = nullptr;
+    std::size_t stride = element;
+    if (accessor.bufferView != -1) {
+      const unsigned char* data = nullptr;
+      std::size_t length = 0;
+      Status status = buffer_view(accessor.bufferView, what, data, length);
+      if (!status) return status;
+      const std::size_t view_stride =
+          model_.bufferViews[static_cast<std::size_t>(accessor.bufferView)].byteStride;
+      if (view_stride != 0 && view_stride < element)
+        return error(what + ": bufferView " + std::to_string(accessor.bufferView) + " has byteStride " +
+                     std::to_string(view_stride) + ", less than the " + std::to_string(element) +
+                     "-byte element");
+      if (view_stride != 0) stride = view_stride;
+      status = check_span(accessor.byteOffset, count, stride, element, length, what);
+      if (!status) return status;
+      first = data + accessor.byteOffset;
+    }
+    out.assign(static_cast<std::size_t>(count) * components, 0.0);  // glTF: no bufferView means zeros
+    if (first != nullptr) {
+      for (std::size_t i = 0; i < count; ++i)
+        for (std::size_t c = 0; c < components; ++c)
+          out[i * components + c] = read_component(first + i * stride + c * size, ct, accessor.normalized);
+    }
+
+    if (accessor.sparse.isSparse) {
+      const auto& sparse = accessor.sparse;
+      const std::string sparse_what = what + " (sparse)";
+      if (sparse.count < 1 || static_cast<std::uint64_t>(sparse.count) > count)
+        return error(sparse_what + ": count " + std::to_string(sparse.count) + " is not in [1, " +
+                     std::to_string(count) + "]");
+      const int index_type = sparse.indices.componentType;
+      if (index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+          index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+          index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+        return error(sparse_what + ": indices of " + component_type_name(index_type) +
+                     " (UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT are allowed)");
+      if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0)
+        return error(sparse_what + ": negative byteOffset");
+      const std::size_t n = static_cast<std::size_t>(sparse.count);
+      const std::size_t index_size = component_size(index_type);
+      const unsigned char* indices = nullptr;
+      const unsigned char* values = nullptr;
+      std::size_t length = 0;
+      // Both are tightly packed (glTF forbids a byteStride on these views).
+      Status status = buffer_view(sparse.indices.bufferView, sparse_what + " indices", indices, length);
+      if (status)
+        status = check_span(static_cast<std::uint64_t>(sparse.indices.byteOffset), n, index_size, index_size,
+                            length, sparse_what + " indices");
+      if (status) status = buffer_view(sparse.values.bufferView, sparse_what + " values", values, length);
+      if (status)
+        status = check_span(static_cast<std::uint64_t>(sparse.values.byteOffset), n, element, element, length,
+                            sparse_what + " values");
+      if (!status) return status;
+      indices += sparse.indices.byteOffset;
+      values += sparse.values.byteOffset;
+      std::uint64_t previous = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const auto target =
+            static_cast<std::uint64_t>(read_component(indices + k * index_size, index_type, false));
+        if (target >= count)
+          return error(sparse_what + ": index " + std::to_string(target) + " (entry " + std::to_string(k) +
+                       ") is past the accessor's " + std::to_string(count) + " elements");
+        if (k > 0 && target <= previous)
+          return error(sparse_what + ": indices are not strictly increasing (" + std::to_string(previous) +
+                       " then " + std::to_string(target) + ")");
+        previous = target;
+        for (std::size_t c = 0; c < components; ++c)
+          out[target * components + c] =
+              read_component(values + k * element + c * size, ct, accessor.normalized);
+      }
+    }
+    return Status::ok();
+  }
+
+  const tinygltf::Model& model_;
+  const std::string& name_;
+  std::vector<LocalMesh> meshes_;
+};
+
+Status load(const std::string& path, const GltfLoadOptions& options, std::vector<GltfMesh>& out) {
+  std::vector<unsigned char> bytes;
+  Status status = read_file(path, bytes);
+  if (!status) return status;
+
+  // Binary or text by content: a GLB starts with the magic "glTF".
+  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+  const std::filesystem::path fs_path(path);
+  std::string extension = fs_path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (!binary && extension == ".glb")
+    return {StatusCode::ParseError, path + ": not a GLB file (no 'glTF' magic at the start)"};
+
+  GlbLayout glb;
+  const char* json = reinterpret_cast<const char*>(bytes.data());
+  std::size_t json_size = bytes.size();
+  if (binary) {
+    status = check_glb(bytes, path, glb);
+    if (!status) return status;
+    json += glb.json_offset;
+    json_size = glb.json_size;
+  }
+  if (json_size > kMaxU32) return {StatusCode::Unsupported, path + ": JSON larger than 4 GiB"};
+  status = precheck_json(json, json_size, path);
+  if (!status) return status;
+
+  FsContext fs_context;
+  tinygltf::TinyGLTF reader;
+  reader.SetFsCallbacks({&fs_file_exists, &fs_expand_path, &fs_read_file, &fs_write_file, &fs_context});
+  reader.SetImageLoader(&skip_image, nullptr);
+  tinygltf::Model model;
+  std::string err;
+  std::string warn;
+  std::string base_dir = fs_path.parent_path().string();
+  if (base_dir.empty()) base_dir = ".";
+  const bool loaded = binary ? reader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                                           static_cast<unsigned>(glb.length), base_dir)
+                             : reader.LoadASCIIFromString(&model, &err, &warn, json,
+                                                          static_cast<unsigned>(json_size), base_dir);
+  if (!loaded) {
+    if (!fs_context.io_error.empty()) return {StatusCode::IoError, path + ": " + fs_context.io_error};
+    return {StatusCode::ParseError, path + ": " + (err.empty() ? std::string("tinygltf failed") : trim(err))};
+  }
+  bytes = {};  // tinygltf keeps its own copy of the buffers
+
+  return Decoder(model, path).run(options.mode, fs_path.stem().string(), out);
+}
+
+}  // namespace
+
+Status load_gltf(const std::string& path, const GltfLoadOptions& options, std::vector<GltfMesh>& out) {
+  out.clear();
+  Status status;
+  try {
+    status = load(path, options, out);
+  } catch (const std::bad_alloc&) {
+    status = {StatusCode::ParseError, path + ": out of memory (sizes in the file are too large)"};
+  } catch (const std::exception& e) {
+    // tinygltf 2.7 can throw on malformed input (e.g. std::out_of_range for a
+    // GLB buffer of byteLength 0).
+    status = {StatusCode::ParseError, path + ": malformed glTF (" + e.what() + ")"};
+  }
+  if (!status) out.clear();
+  return status;
+}
+
+}  // namespace prox::io

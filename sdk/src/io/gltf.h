@@ -1,0 +1,54 @@
+// glTF 2.0 reading (.gltf with external or embedded buffers, and .glb):
+// triangle geometry of the default scene only, in double precision. Built when
+// PROX_WITH_GLTF is on (the default); it needs tinygltf and nlohmann-json.
+#pragma once
+
+#include "common/status.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace prox::io {
+
+enum class GltfSceneMode {
+  Merged,   // one soup holding every mesh instance of the scene
+  PerNode,  // one soup per node that instantiates a mesh with triangles, in scene order
+};
+
+// One triangle soup in world (scene root) coordinates: every node transform
+// from the root down to the mesh is applied, in double precision.
+struct GltfMesh {
+  std::string name;  // node name (else mesh name, else "node N") for PerNode; file stem for Merged
+  std::vector<double> positions;       // x, y, z per vertex
+  std::vector<std::uint32_t> indices;  // three per triangle, 0-based into positions
+};
+
+struct GltfLoadOptions {
+  GltfSceneMode mode = GltfSceneMode::Merged;
+};
+
+// Reads the default scene of `path` (scene 0 if the file names none; every
+// root node if it has no scenes). What is read:
+// - every triangle primitive (TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN; indexed
+//   or not) of every mesh instance, once per node that instantiates it;
+//   POINTS and LINES primitives are skipped;
+// - POSITION only: float, or the integer types of KHR_mesh_quantization
+//   (normalized or not), with byteStride, byteOffset and sparse accessors;
+// - node matrices and translation/rotation/scale;
+// - skinned meshes in their authored (bind) coordinates under their node's
+//   transform, not posed by their joints (see decode_mesh in gltf.cpp);
+//   morph targets and animations are ignored.
+// Images are never read or decoded.
+//
+// Errors name the file and the offending part ("mesh 3 'Gear' primitive 0:
+// POSITION accessor 12: ..."): IoError when a file cannot be read (the file
+// itself or an external buffer), Unsupported for an extension in
+// extensionsRequired that changes geometry (e.g. KHR_draco_mesh_compression),
+// another glTF major version, or a scene without triangles, and ParseError for
+// anything malformed (truncated or corrupt container or JSON, out-of-range
+// references or bytes, index values past the vertex count, non-finite
+// positions). `out` is empty after an error.
+Status load_gltf(const std::string& path, const GltfLoadOptions& options, std::vector<GltfMesh>& out);
+
+}  // namespace prox::io
