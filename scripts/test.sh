@@ -30,4 +30,6 @@ configure build/release -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_BENCHMARKS=ON
 cmake --build build/release -j "$jobs"
 echo "-- micro-benchmark smoke run"
 build/release/bench/proxima_kernel_bench --benchmark_min_time=0.01 >/dev/null
+echo "-- scene benchmark smoke run (docs/benchmarks.md)"
+build/release/bench/proxima_bench --scene all --poses 5 --out build/bench-smoke >/dev/null
 ctest --test-dir build/release --output-on-failure -j "$jobs"

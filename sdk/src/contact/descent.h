@@ -24,47 +24,60 @@ inline Triangle moved(const Triangle& t, const Pose& pose) {
 
 struct NodePair {
   const SnchNode& a;
-  Vec3 center_b;  // in A's frame
-  double radius_b;
-  Vec3 axis_b;  // in A's frame
-  double half_b;
-  bool cone_b_unbounded;
+  const SnchNode& b;
+  Vec3 center_b;                  // in A's frame
+  Vec3 axis_b;                    // in A's frame
   bool two_sided_a, two_sided_b;  // open surfaces: each cone counts with its reverse
 };
 
 inline bool g1_rejects(const NodePair& p, double cutoff) {
-  return glm::length(p.center_b - p.a.center) - p.a.radius - p.radius_b > cutoff;
+  const double reach = p.a.radius + p.b.radius + cutoff;
+  const Vec3 d = p.center_b - p.a.center;
+  return glm::dot(d, d) > reach * reach;
+}
+
+// cos(x + y) from the cosines and sines of x and y, for x, y in [0, pi]; -1
+// when x + y >= pi (then every angle is within x + y).
+inline double cos_sum(double cx, double sx, double cy, double sy) {
+  if (cx * cy - sx * sy <= -1.0) return -1.0;
+  // x + y >= pi exactly when cos(x) <= cos(pi - y) = -cos(y).
+  if (cx <= -cy) return -1.0;
+  return cx * cy - sx * sy;
 }
 
 // G2: a local minimum needs a normal of A and a normal of B pointing at each
 // other; no such pair exists when the angle between A's axis and the reverse
-// of B's exceeds both half-angles together.
+// of B's exceeds both half-angles together. In cosines: reject when
+// cos(angle(a, -b)) < cos(phi_a + phi_b).
 inline bool g2_rejects(const NodePair& p) {
-  if (p.a.cone.unbounded() || p.cone_b_unbounded) return false;
-  const double theta = angle_between(p.a.cone.axis, p.axis_b);
+  if (p.a.cone.unbounded() || p.b.cone.unbounded()) return false;
+  const double limit = cos_sum(p.a.cone_cos, p.a.cone_sin, p.b.cone_cos, p.b.cone_sin);
+  if (limit <= -1.0) return false;
+  const double c = -glm::dot(p.a.cone.axis, p.axis_b);
   // Two-sided cones: the axes may point either way; the most favourable
   // orientation decides.
-  const double opposite = (p.two_sided_a || p.two_sided_b) ? std::min(theta, kPi - theta) : kPi - theta;
-  return opposite > p.a.cone.half_angle + p.half_b;
+  return ((p.two_sided_a || p.two_sided_b) ? std::abs(c) : c) < limit;
 }
 
 // G3.a / G3.b: every line from sphere A to sphere B lies within sigma of the
-// line between the centres; A's cone must reach that cone of lines, and B's
-// must reach its reverse.
+// line between the centres (sin sigma = (rho_a + rho_b) / distance); A's cone
+// must reach that cone of lines, and B's must reach its reverse.
 inline bool g3_rejects(const NodePair& p) {
   const Vec3 between = p.center_b - p.a.center;
-  const double dist = glm::length(between);
-  const double reach = p.a.radius + p.radius_b;
-  if (!(dist > reach)) return false;  // overlapping spheres: lines go everywhere
-  const double sigma = std::asin(reach / dist);
+  const double dist2 = glm::dot(between, between);
+  const double reach = p.a.radius + p.b.radius;
+  if (!(dist2 > reach * reach)) return false;  // overlapping spheres: lines go everywhere
+  const double dist = std::sqrt(dist2);
+  const double sin_sigma = reach / dist, cos_sigma = std::sqrt(1.0 - sin_sigma * sin_sigma);
   const Vec3 dir = between / dist;
-  auto misses = [sigma](const Vec3& d, const Vec3& axis, double half, bool two_sided) {
-    const double angle = angle_between(d, axis);
-    return (two_sided ? std::min(angle, kPi - angle) : angle) > sigma + half;
+  auto misses = [&](const SnchNode& n, const Vec3& d, const Vec3& axis, bool two_sided) {
+    if (n.cone.unbounded()) return false;
+    const double limit = cos_sum(cos_sigma, sin_sigma, n.cone_cos, n.cone_sin);
+    if (limit <= -1.0) return false;
+    const double c = glm::dot(d, axis);
+    return (two_sided ? std::abs(c) : c) < limit;
   };
-  if (!p.a.cone.unbounded() && misses(dir, p.a.cone.axis, p.a.cone.half_angle, p.two_sided_a)) return true;
-  if (!p.cone_b_unbounded && misses(-dir, p.axis_b, p.half_b, p.two_sided_b)) return true;
-  return false;
+  return misses(p.a, dir, p.a.cone.axis, p.two_sided_a) || misses(p.b, -dir, p.axis_b, p.two_sided_b);
 }
 
 // Simultaneous descent of both trees; `use_cones` switches G2/G3 on; `leaf`
@@ -84,11 +97,9 @@ void descend(const PairQuery& q, const Frames& frames, bool use_cones, GlobalSea
     const SnchNode& na = ta.node(ia);
     const SnchNode& nb = tb.node(ib);
     const NodePair p{na,
+                     nb,
                      frames.b_to_a.apply(nb.center),
-                     nb.radius,
                      frames.b_to_a.rotate(nb.cone.axis),
-                     nb.cone.half_angle,
-                     nb.cone.unbounded(),
                      ta.two_sided(),
                      tb.two_sided()};
     if (g1_rejects(p, q.cutoff)) {

@@ -114,6 +114,8 @@ Snch::Snch(const Mesh& mesh) {
   struct Task {
     std::uint32_t node, begin, end, depth;
   };
+  // Each node's range in `order`, for fitting inner spheres to their vertices.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> range(n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0);
   std::vector<Task> stack;
   if (n > 0) {
     nodes_.emplace_back();
@@ -125,6 +127,7 @@ Snch::Snch(const Mesh& mesh) {
     const Task task = stack.back();
     stack.pop_back();
     stats_.depth = std::max(stats_.depth, task.depth);
+    range[task.node] = {task.begin, task.end};
     if (task.end - task.begin == 1) {
       const std::uint32_t t = order[task.begin];
       SnchNode& leaf = nodes_[task.node];
@@ -160,14 +163,31 @@ Snch::Snch(const Mesh& mesh) {
     stack.push_back({first, task.begin, mid, task.depth + 1});
   }
   // Children always come after their parent: fill inner nodes bottom-up.
+  // The sphere is the smaller of the one holding both children's spheres and
+  // the one around the middle of the node's own vertices' box: merged
+  // spheres grow with every level, fitted ones do not.
   for (std::size_t i = nodes_.size(); i-- > 0;) {
     SnchNode& node = nodes_[i];
     if (node.is_leaf()) continue;
     const SnchNode &a = nodes_[node.first], &b = nodes_[node.second];
-    const Sphere s = merge(Sphere{a.center, a.radius}, Sphere{b.center, b.radius});
+    Sphere s = merge(Sphere{a.center, a.radius}, Sphere{b.center, b.radius});
+    Vec3 lo(INFINITY), hi(-INFINITY);
+    for (std::uint32_t k = range[i].first; k < range[i].second; ++k)
+      for (std::uint32_t v : mesh.indices(order[k]))
+        lo = glm::min(lo, mesh.vertex(v)), hi = glm::max(hi, mesh.vertex(v));
+    const Vec3 centre = 0.5 * (lo + hi);
+    double r2 = 0.0;
+    for (std::uint32_t k = range[i].first; k < range[i].second; ++k)
+      for (std::uint32_t v : mesh.indices(order[k]))
+        r2 = std::max(r2, glm::dot(mesh.vertex(v) - centre, mesh.vertex(v) - centre));
+    if (std::sqrt(r2) < s.radius) s = {centre, std::sqrt(r2)};
     node.center = s.center;
     node.radius = s.radius;
     node.cone = merge(a.cone, b.cone);
+  }
+  for (SnchNode& node : nodes_) {
+    node.cone_cos = std::cos(node.cone.half_angle);
+    node.cone_sin = std::sin(node.cone.half_angle);
   }
   vertex_spread_.assign(mesh.vertex_count(), 0.5 * kPi);
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {

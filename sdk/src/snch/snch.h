@@ -16,6 +16,7 @@ struct SnchNode {
   // Directions along which a local minimum distance pair can leave the
   // surface of any triangle below this node (see docs/snch.md).
   Cone cone;
+  double cone_cos = -1.0, cone_sin = 0.0;  // of cone.half_angle, for trigonometry-free tests
   // Inner node: children `first` and `second`. Leaf: `first` is the
   // triangle, `second` is kLeaf.
   std::uint32_t first = 0, second = 0;

@@ -1,0 +1,1091 @@
+// proxima_bench: run time against error on named scenes, every method side by
+// side on the same poses in one run (issue 5, docs/benchmarks.md).
+//
+//   proxima_bench [--scene NAME|all] [--poses N] [--out DIR] [--reference-every K]
+//                 [--local-reps R] [--force-reps R] [--list]
+//
+// At every pose of a scene's path, in this order: the precise method (a local
+// update of the previous step's set to the new pose, as the local thread does,
+// then the global search with its reduction, then the haptic loop's force
+// evaluation over the result), the original Johnson-Cohen baseline (the same),
+// Proxima's exact minimum distance (minimum_distance, the query FCL answers),
+// FCL's distance query when built with it, and the brute-force reference every
+// K-th pose. Errors are measured against the reference. Per-step figures go to
+// DIR/<scene>.csv, a summary to DIR/<scene>.json, and a readable summary to
+// standard output.
+#include "contact/force.h"
+#include "contact/global_search.h"
+#include "contact/proximity.h"
+#include "io/obj.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#ifdef PROX_BENCH_WITH_FCL
+#include <fcl/config.h>
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/math/bv/OBBRSS.h>
+#include <fcl/narrowphase/distance.h>
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace prox::bench {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPiValue = 3.14159265358979323846;
+
+struct UserError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// ---- statistics ----------------------------------------------------------------
+
+// Nearest-rank percentile of the finite values (NaN when there are none).
+double percentile(std::vector<double> v, double p) {
+  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
+  if (v.empty()) return kNaN;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, static_cast<std::size_t>(p * double(v.size() - 1) + 0.5))];
+}
+double median(std::vector<double> v) { return percentile(std::move(v), 0.5); }
+double maximum(const std::vector<double>& v) {
+  double m = kNaN;
+  for (double x : v)
+    if (std::isfinite(x) && !(x <= m)) m = x;
+  return m;
+}
+double ratio(double a, double b) { return std::isfinite(a) && std::isfinite(b) && b > 0.0 ? a / b : kNaN; }
+
+// ---- JSON ------------------------------------------------------------------------
+
+// A small indented JSON writer: NaN and infinities become null.
+class Json {
+ public:
+  Json& begin_object() { return open('{'); }
+  Json& end_object() { return close('}'); }
+  Json& begin_array() { return open('['); }
+  Json& end_array() { return close(']'); }
+  Json& key(const std::string& k) {
+    item();
+    quoted(k);
+    out_ += ": ";
+    after_key_ = true;
+    return *this;
+  }
+  Json& value(double v) {
+    item();
+    if (!std::isfinite(v)) {
+      out_ += "null";
+    } else {
+      char buf[40];
+      std::snprintf(buf, sizeof buf, "%.10g", v);
+      out_ += buf;
+    }
+    return *this;
+  }
+  Json& value(long long v) {
+    item();
+    out_ += std::to_string(v);
+    return *this;
+  }
+  Json& value(int v) { return value(static_cast<long long>(v)); }
+  Json& value(std::size_t v) { return value(static_cast<long long>(v)); }
+  Json& value(bool v) {
+    item();
+    out_ += v ? "true" : "false";
+    return *this;
+  }
+  Json& value(const std::string& s) {
+    item();
+    quoted(s);
+    return *this;
+  }
+  Json& value(const char* s) { return value(std::string(s)); }
+  Json& vec3(const Vec3& v) {
+    begin_array();
+    inline_ = true;
+    value(v.x).value(v.y).value(v.z);
+    end_array();
+    inline_ = false;
+    return *this;
+  }
+  template <typename T>
+  Json& field(const std::string& k, const T& v) {
+    key(k);
+    return value(v);
+  }
+  const std::string& str() const { return out_; }
+
+ private:
+  Json& open(char c) {
+    item();
+    out_ += c;
+    ++depth_;
+    first_ = true;
+    return *this;
+  }
+  Json& close(char c) {
+    --depth_;
+    if (!first_ && !inline_) newline();
+    out_ += c;
+    first_ = false;
+    return *this;
+  }
+  void item() {
+    if (after_key_) {
+      after_key_ = false;
+      return;
+    }
+    if (!first_ && depth_ > 0) out_ += inline_ ? ", " : ",";
+    if (depth_ > 0 && !inline_) newline();
+    first_ = false;
+  }
+  void newline() {
+    out_ += '\n';
+    out_.append(static_cast<std::size_t>(2 * depth_), ' ');
+  }
+  void quoted(const std::string& s) {
+    out_ += '"';
+    for (char c : s) {
+      if (c == '"' || c == '\\') out_ += '\\';
+      out_ += c;
+    }
+    out_ += '"';
+  }
+  std::string out_;
+  int depth_ = 0;
+  bool first_ = true, after_key_ = false, inline_ = false;
+};
+
+void write_file(const std::string& path, const std::string& text) {
+  FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) throw UserError(path + ": cannot write");
+  std::fputs(text.c_str(), f);
+  if (std::fclose(f) != 0) throw UserError(path + ": cannot write");
+}
+
+// ---- models ----------------------------------------------------------------------
+
+struct Model {
+  std::string name, file;
+  Mesh mesh;
+  std::unique_ptr<Snch> snch;
+  double size = 0.0;                       // bounding-box diagonal
+  Vec3 box_centre{0.0};                    // the tool's reference point for torques
+  Vec3 centroid{0.0};                      // area-weighted surface centroid: path R turns about it
+  std::vector<double> snch_build_seconds;  // one per build
+#ifdef PROX_BENCH_WITH_FCL
+  std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fcl;
+  std::vector<double> fcl_build_seconds;
+  std::size_t fcl_memory_bytes = 0;
+#endif
+};
+
+std::string asset_path(const std::string& name) {
+  if (const char* dir = std::getenv("PROXIMA_ASSETS")) return std::string(dir) + "/" + name;
+  return std::string(PROX_SHARED_ASSETS_DIR) + "/" + name;
+}
+
+constexpr int kBuildRepetitions = 3;  // hierarchy builds per mesh; the median is reported
+
+std::shared_ptr<Model> load_model(const std::string& name) {
+  auto model = std::make_shared<Model>();
+  model->name = name;
+  model->file = asset_path(name);
+  io::ObjData obj;
+  const Status s = io::read_obj(model->file, obj);
+  if (!s) throw UserError(s.message() + " (the shared assets must sit beside the repository)");
+  const MeshInput input{obj.positions.data(), static_cast<std::uint32_t>(obj.positions.size() / 3),
+                        obj.indices.data(), static_cast<std::uint32_t>(obj.indices.size() / 3)};
+  Status status;
+  model->mesh = Mesh::build(input, status);
+  if (!status) throw UserError(model->file + ": " + status.message());
+  const Mesh& m = model->mesh;
+  model->size = glm::length(m.bounds().max - m.bounds().min);
+  model->box_centre = 0.5 * (m.bounds().max + m.bounds().min);
+  double area = 0.0;
+  Vec3 sum(0.0);
+  for (std::uint32_t t = 0; t < m.triangle_count(); ++t) {
+    const Triangle tri = m.triangle(t);
+    const double a = 0.5 * glm::length(glm::cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]));
+    area += a;
+    sum += a * (tri.v[0] + tri.v[1] + tri.v[2]) / 3.0;
+  }
+  model->centroid = area > 0.0 ? sum / area : model->box_centre;
+  for (int i = 0; i < kBuildRepetitions; ++i) {
+    model->snch = std::make_unique<Snch>(m);
+    model->snch_build_seconds.push_back(model->snch->stats().build_seconds);
+  }
+#ifdef PROX_BENCH_WITH_FCL
+  // The same welded geometry as the engine's, so both answer for one mesh.
+  std::vector<fcl::Vector3d> points(m.vertex_count());
+  for (std::uint32_t v = 0; v < m.vertex_count(); ++v)
+    points[v] = fcl::Vector3d(m.vertex(v).x, m.vertex(v).y, m.vertex(v).z);
+  std::vector<fcl::Triangle> triangles(m.triangle_count());
+  for (std::uint32_t t = 0; t < m.triangle_count(); ++t)
+    triangles[t] = fcl::Triangle(m.indices(t)[0], m.indices(t)[1], m.indices(t)[2]);
+  for (int i = 0; i < kBuildRepetitions; ++i) {
+    const auto start = Clock::now();
+    auto bvh = std::make_shared<fcl::BVHModel<fcl::OBBRSSd>>();
+    bvh->beginModel(static_cast<int>(triangles.size()), static_cast<int>(points.size()));
+    bvh->addSubModel(points, triangles);
+    bvh->endModel();
+    model->fcl_build_seconds.push_back(seconds_since(start));
+    model->fcl = bvh;
+  }
+  // What BVHModel::memUsage prints (it returns a status, not the size).
+  const auto& bvh = *model->fcl;
+  model->fcl_memory_bytes = sizeof(fcl::BVNode<fcl::OBBRSSd>) * static_cast<std::size_t>(bvh.getNumBVs()) +
+                            sizeof(fcl::Triangle) * static_cast<std::size_t>(bvh.num_tris) +
+                            sizeof(fcl::Vector3d) * static_cast<std::size_t>(bvh.num_vertices) + sizeof(bvh);
+#endif
+  return model;
+}
+
+#ifdef PROX_BENCH_WITH_FCL
+fcl::Transform3d to_fcl(const Pose& p) {
+  fcl::Transform3d tf = fcl::Transform3d::Identity();
+  fcl::Matrix3d r;
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 3; ++col) r(row, col) = p.rotation[col][row];  // glm is column-major
+  tf.linear() = r;
+  tf.translation() = fcl::Vector3d(p.translation.x, p.translation.y, p.translation.z);
+  return tf;
+}
+#endif
+
+// ---- scenes --------------------------------------------------------------------
+
+enum class PathKind {
+  Translate,  // B along +x, linear in x between the x of two gaps
+  Rotate,     // path R: B turned about its centroid, x set per pose for a gap
+};
+
+struct Scene {
+  std::string name;
+  std::string description;
+  PathKind kind = PathKind::Translate;
+  double far = 0.05, near = 0.0005;  // minimum distance at the first and the last pose
+  bool soft = false;                 // force settings: soft, else hard
+  std::string same_as;               // another name for the same scene
+};
+
+const std::vector<Scene>& scenes() {
+  static const std::vector<Scene> all = {
+      {"path-t",
+       "Path T (issue 5): bunny B translated along +x from 50 mm to 0.5 mm from bunny A, linear in x; "
+       "hard force settings, cutoff 5 mm. The paper's hard scene (6.1) is this path.",
+       PathKind::Translate, 0.05, 0.0005, false, "paper-hard"},
+      {"path-r",
+       "Path R (issue 5): bunny B turned by 90 deg * s about normalize(0.3, 1, 0.2) through its centroid "
+       "and moved along +x so that the minimum distance is 50 mm * 0.01^s (bisection on x); hard force "
+       "settings, cutoff 5 mm.",
+       PathKind::Rotate, 0.05, 0.0005, false, ""},
+      {"paper-hard",
+       "The paper's 6.1 benchmark with the hard force settings: path T (50 mm to 0.5 mm), cutoff 5 mm.",
+       PathKind::Translate, 0.05, 0.0005, false, "path-t"},
+      {"paper-soft",
+       "The paper's 6.1 benchmark with the soft force settings: bunny B translated along +x from 50 mm to "
+       "2 mm from bunny A, linear in x; linear force, cutoff 10 mm.",
+       PathKind::Translate, 0.05, 0.002, true, ""},
+  };
+  return all;
+}
+
+struct PosePoint {
+  Pose pose;
+  double s = 0.0, x = 0.0, target_gap = 0.0;
+};
+
+PairQuery make_query(const Model& a, const Model& b, const Pose& pose_b, double cutoff) {
+  return {&a.mesh, a.snch.get(), Pose{}, &b.mesh, b.snch.get(), pose_b, cutoff};
+}
+
+// The x at which `at(x)` puts B exactly `gap` from A, by bisection between an
+// overlapping x (0: B's centre on A's) and one far apart. The result never
+// penetrates: no pair is closer than `gap` (to 1e-12 of the bracket).
+template <typename PoseAt>
+double x_at_gap(const Model& a, const Model& b, double gap, PoseAt at) {
+  double lo = 0.0, hi = a.size + b.size + gap;
+  for (int i = 0; i < 100 && hi - lo > 1e-12 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (any_closer_than(make_query(a, b, at(mid), 0.0), gap) ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+std::vector<PosePoint> make_path(const Scene& scene, const Model& a, const Model& b, int n) {
+  std::vector<PosePoint> path;
+  if (scene.kind == PathKind::Translate) {
+    auto at = [](double x) { return Pose{glm::dmat3(1.0), Vec3(x, 0.0, 0.0)}; };
+    const double x0 = x_at_gap(a, b, scene.far, at), x1 = x_at_gap(a, b, scene.near, at);
+    for (int i = 0; i < n; ++i) {
+      const double s = n > 1 ? double(i) / double(n - 1) : 1.0;
+      PosePoint p;
+      p.s = s;
+      p.x = x0 + (x1 - x0) * s;
+      p.pose = at(p.x);
+      p.target_gap = kNaN;  // linear in x, not in the gap
+      path.push_back(p);
+    }
+  } else {
+    const Vec3 axis = glm::normalize(Vec3(0.3, 1.0, 0.2));
+    const Vec3 c = b.centroid;
+    for (int i = 0; i < n; ++i) {
+      const double s = n > 1 ? double(i) / double(n - 1) : 1.0;
+      const glm::dmat3 r = glm::mat3_cast(glm::angleAxis(0.5 * kPiValue * s, axis));
+      const Vec3 base = c - r * c;  // turn about the centroid
+      auto at = [&](double x) { return Pose{r, base + Vec3(x, 0.0, 0.0)}; };
+      PosePoint p;
+      p.s = s;
+      p.target_gap = scene.far * std::pow(scene.near / scene.far, s);
+      p.x = x_at_gap(a, b, p.target_gap, at);
+      p.pose = at(p.x);
+      path.push_back(p);
+    }
+  }
+  return path;
+}
+
+// ---- one step ------------------------------------------------------------------
+
+// One row of the per-step CSV: one method at one pose. NaN: not applicable.
+struct Row {
+  int step = 0;
+  double s = 0.0, x = 0.0, target_gap = kNaN, exact_min = kNaN;
+  std::string method;
+  double query_ms = kNaN;  // precise/original: global search + reduction; others: the one query
+  double global_ms = kNaN, reduction_ms = kNaN;
+  double local_ms = kNaN, local_in = kNaN, local_out = kNaN, local_cache_hits = kNaN;
+  double local_distance_evaluations = kNaN;
+  double force_eval_ns = kNaN;
+  double candidates = kNaN, lmds = kNaN;
+  double node_pairs = kNaN, leaf_pairs = kNaN, visibility_rejections = kNaN, normal_rejections = kNaN;
+  double distance_evaluations = kNaN, reduction_cache_hits = kNaN;
+  double min_distance = kNaN;
+  Vec3 force{kNaN}, torque{kNaN};
+  // Against the reference at this pose (when it was computed).
+  double ref_lmds = kNaN, recalled = kNaN, confirmed = kNaN, recalled_loose = kNaN, confirmed_loose = kNaN;
+  double min_distance_error = kNaN, force_error = kNaN, torque_error = kNaN;
+  double local_recalled = kNaN, local_confirmed = kNaN;  // the locally updated set at this pose
+};
+
+using Column = std::pair<const char*, std::function<double(const Row&)>>;
+const std::vector<Column>& columns() {
+  static const std::vector<Column> c = {
+      {"s", [](const Row& r) { return r.s; }},
+      {"x", [](const Row& r) { return r.x; }},
+      {"target_gap", [](const Row& r) { return r.target_gap; }},
+      {"exact_min_distance", [](const Row& r) { return r.exact_min; }},
+      {"query_ms", [](const Row& r) { return r.query_ms; }},
+      {"global_ms", [](const Row& r) { return r.global_ms; }},
+      {"reduction_ms", [](const Row& r) { return r.reduction_ms; }},
+      {"local_ms", [](const Row& r) { return r.local_ms; }},
+      {"local_in", [](const Row& r) { return r.local_in; }},
+      {"local_out", [](const Row& r) { return r.local_out; }},
+      {"local_cache_hits", [](const Row& r) { return r.local_cache_hits; }},
+      {"local_distance_evaluations", [](const Row& r) { return r.local_distance_evaluations; }},
+      {"force_eval_ns", [](const Row& r) { return r.force_eval_ns; }},
+      {"candidates", [](const Row& r) { return r.candidates; }},
+      {"lmds", [](const Row& r) { return r.lmds; }},
+      {"node_pairs", [](const Row& r) { return r.node_pairs; }},
+      {"leaf_pairs", [](const Row& r) { return r.leaf_pairs; }},
+      {"visibility_rejections", [](const Row& r) { return r.visibility_rejections; }},
+      {"normal_rejections", [](const Row& r) { return r.normal_rejections; }},
+      {"distance_evaluations", [](const Row& r) { return r.distance_evaluations; }},
+      {"reduction_cache_hits", [](const Row& r) { return r.reduction_cache_hits; }},
+      {"min_distance", [](const Row& r) { return r.min_distance; }},
+      {"force_x", [](const Row& r) { return r.force.x; }},
+      {"force_y", [](const Row& r) { return r.force.y; }},
+      {"force_z", [](const Row& r) { return r.force.z; }},
+      {"force", [](const Row& r) { return glm::length(r.force); }},
+      {"torque_x", [](const Row& r) { return r.torque.x; }},
+      {"torque_y", [](const Row& r) { return r.torque.y; }},
+      {"torque_z", [](const Row& r) { return r.torque.z; }},
+      {"torque", [](const Row& r) { return glm::length(r.torque); }},
+      {"ref_lmds", [](const Row& r) { return r.ref_lmds; }},
+      {"recalled", [](const Row& r) { return r.recalled; }},
+      {"confirmed", [](const Row& r) { return r.confirmed; }},
+      {"recalled_2mm", [](const Row& r) { return r.recalled_loose; }},
+      {"confirmed_2mm", [](const Row& r) { return r.confirmed_loose; }},
+      {"min_distance_error", [](const Row& r) { return r.min_distance_error; }},
+      {"force_error", [](const Row& r) { return r.force_error; }},
+      {"torque_error", [](const Row& r) { return r.torque_error; }},
+      {"local_recalled", [](const Row& r) { return r.local_recalled; }},
+      {"local_confirmed", [](const Row& r) { return r.local_confirmed; }},
+  };
+  return c;
+}
+
+struct Options {
+  std::string scene = "all";
+  int poses = 1000;
+  std::string out = "bench-results";
+  int reference_every = 1;  // 0: never
+  int local_reps = 5;       // local updates per step and method; the median time is kept
+  int force_reps = 7;       // batches of kForceBatch force evaluations; the median is kept
+};
+
+constexpr int kForceBatch = 100;
+constexpr double kLooseMatch = 0.002;  // the original's feature points match within 2 mm
+
+// How many of `reference` have a match in `found` and how many of `found` have
+// one in `reference`: closest points on both sides within `tolerance`.
+std::pair<int, int> match(const std::vector<LmdPair>& reference, const std::vector<LmdPair>& found,
+                          double tolerance) {
+  auto same = [tolerance](const LmdPair& x, const LmdPair& y) {
+    return glm::length(x.point_a - y.point_a) <= tolerance && glm::length(x.point_b - y.point_b) <= tolerance;
+  };
+  int recalled = 0, confirmed = 0;
+  for (const LmdPair& r : reference)
+    recalled += std::any_of(found.begin(), found.end(), [&](const LmdPair& f) { return same(r, f); });
+  for (const LmdPair& f : found)
+    confirmed +=
+        std::any_of(reference.begin(), reference.end(), [&](const LmdPair& r) { return same(r, f); });
+  return {recalled, confirmed};
+}
+
+// Median time of one tool_wrench call over `lmds`, in nanoseconds.
+double time_force(const ForceSettings& force, const std::vector<LmdPair>& lmds, const Vec3& reference,
+                  int batches) {
+  std::vector<double> ns;
+  volatile double sink = 0.0;
+  for (int b = 0; b < batches; ++b) {
+    const auto start = Clock::now();
+    for (int i = 0; i < kForceBatch; ++i) sink = sink + tool_wrench(force, lmds, reference).force.x;
+    ns.push_back(seconds_since(start) * 1e9 / kForceBatch);
+  }
+  return median(ns);
+}
+
+struct MethodState {
+  Method method;
+  std::vector<LmdPair> tracked;  // the previous step's set
+  std::vector<LmdPair> current;  // this step's
+  std::vector<LmdPair> local;    // the previous set updated to this pose
+};
+
+// ---- summaries -----------------------------------------------------------------
+
+struct SceneRun {
+  const Scene* scene = nullptr;
+  ForceSettings force;
+  std::vector<PosePoint> path;
+  std::vector<Row> rows;
+  double seconds = 0.0;
+  double path_seconds = 0.0;
+};
+
+std::vector<const Row*> rows_of(const SceneRun& run, const std::string& method, bool contact_only) {
+  std::vector<const Row*> out;
+  for (const Row& r : run.rows)
+    if (r.method == method && (!contact_only || r.exact_min <= run.force.cutoff)) out.push_back(&r);
+  return out;
+}
+
+std::vector<double> values(const std::vector<const Row*>& rows, double Row::*field) {
+  std::vector<double> v;
+  for (const Row* r : rows) v.push_back(r->*field);
+  return v;
+}
+
+void distribution(Json& j, const std::string& name, const std::vector<double>& v) {
+  j.key(name).begin_object();
+  j.field("median", median(v)).field("p99", percentile(v, 0.99)).field("max", maximum(v));
+  j.end_object();
+}
+
+// Median, p99 and max of a field over all poses and over the poses in contact
+// (exact minimum distance within the cutoff).
+void both(Json& j, const SceneRun& run, const std::string& method, const std::string& name,
+          double Row::*field) {
+  j.key(name).begin_object();
+  distribution(j, "all", values(rows_of(run, method, false), field));
+  distribution(j, "contact", values(rows_of(run, method, true), field));
+  j.end_object();
+}
+
+struct Accuracy {
+  long long reference = 0, found = 0, recalled = 0, confirmed = 0, recalled_loose = 0, confirmed_loose = 0;
+  long long local_found = 0, local_recalled = 0, local_confirmed = 0, poses = 0, missed_minimum = 0;
+  double min_error = kNaN, force_error = kNaN, torque_error = kNaN, force_error_median = kNaN;
+};
+
+Accuracy accuracy(const SceneRun& run, const std::string& method) {
+  Accuracy a;
+  std::vector<double> force_errors;
+  for (const Row* r : rows_of(run, method, false)) {
+    if (!std::isfinite(r->ref_lmds)) continue;
+    ++a.poses;
+    a.reference += static_cast<long long>(r->ref_lmds);
+    a.found += static_cast<long long>(r->lmds);
+    a.recalled += static_cast<long long>(r->recalled);
+    a.confirmed += static_cast<long long>(r->confirmed);
+    a.recalled_loose += static_cast<long long>(r->recalled_loose);
+    a.confirmed_loose += static_cast<long long>(r->confirmed_loose);
+    if (std::isfinite(r->local_recalled)) {
+      a.local_found += static_cast<long long>(r->local_out);
+      a.local_recalled += static_cast<long long>(r->local_recalled);
+      a.local_confirmed += static_cast<long long>(r->local_confirmed);
+    }
+    if (r->ref_lmds > 0 && !(r->lmds > 0)) ++a.missed_minimum;
+    if (std::isfinite(r->min_distance_error) && !(r->min_distance_error <= a.min_error))
+      a.min_error = r->min_distance_error;
+    if (std::isfinite(r->force_error) && !(r->force_error <= a.force_error)) a.force_error = r->force_error;
+    if (std::isfinite(r->torque_error) && !(r->torque_error <= a.torque_error))
+      a.torque_error = r->torque_error;
+    force_errors.push_back(r->force_error);
+  }
+  a.force_error_median = median(force_errors);
+  return a;
+}
+
+double fraction(long long part, long long whole) { return whole > 0 ? double(part) / double(whole) : kNaN; }
+
+struct Smoothness {
+  double max_jump = kNaN, total_variation = kNaN, max_torque_jump = kNaN;
+};
+
+Smoothness smoothness(const std::vector<const Row*>& rows) {
+  Smoothness s;
+  const Row* previous = nullptr;
+  for (const Row* r : rows) {
+    if (!std::isfinite(r->force.x)) continue;
+    if (previous) {
+      const double jump = glm::length(r->force - previous->force);
+      const double tjump = glm::length(r->torque - previous->torque);
+      s.max_jump = std::isfinite(s.max_jump) ? std::max(s.max_jump, jump) : jump;
+      s.total_variation = (std::isfinite(s.total_variation) ? s.total_variation : 0.0) + jump;
+      s.max_torque_jump = std::isfinite(s.max_torque_jump) ? std::max(s.max_torque_jump, tjump) : tjump;
+    }
+    previous = r;
+  }
+  return s;
+}
+
+// Per-pose ratio of one method's query time to another's.
+std::vector<double> pose_ratios(const SceneRun& run, const std::string& num, const std::string& den,
+                                bool contact_only) {
+  const auto a = rows_of(run, num, contact_only), b = rows_of(run, den, contact_only);
+  std::vector<double> r;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+    r.push_back(ratio(a[i]->query_ms, b[i]->query_ms));
+  return r;
+}
+
+double reduction_ratio(const std::vector<const Row*>& rows, bool maximum_only) {
+  double total_c = 0.0, total_l = 0.0, best = kNaN;
+  for (const Row* r : rows) {
+    if (!(r->lmds > 0)) continue;
+    total_c += r->candidates, total_l += r->lmds;
+    const double q = r->candidates / r->lmds;
+    if (!(q <= best)) best = q;
+  }
+  return maximum_only ? best : ratio(total_c, total_l);
+}
+
+const char* kPeerNote =
+    "FCL's distance query returns one closest pair per pose; Proxima returns the whole LMD set (every local "
+    "minimum within the cutoff). min-distance is Proxima's own single-pair query (minimum_distance), the "
+    "like-for-like peer of FCL's.";
+
+std::string summary_json(const SceneRun& run, const Model& model, const Options& opt) {
+  const Scene& sc = *run.scene;
+  Json j;
+  j.begin_object();
+  j.field("scene", sc.name).field("description", sc.description);
+  if (!sc.same_as.empty()) j.field("same_as", sc.same_as);
+  j.key("path").begin_object();
+  j.field("kind", sc.kind == PathKind::Translate ? "translate" : "rotate");
+  j.field("far_gap", sc.far).field("near_gap", sc.near).field("poses", static_cast<int>(run.path.size()));
+  if (sc.kind == PathKind::Rotate) {
+    j.key("axis").vec3(glm::normalize(Vec3(0.3, 1.0, 0.2)));
+    j.field("angle_deg", 90.0);
+    j.key("centroid").vec3(model.centroid);
+  }
+  j.field("x_first", run.path.front().x).field("x_last", run.path.back().x);
+  j.field("seconds_to_build", run.path_seconds);
+  j.end_object();
+  j.key("force_settings").begin_object();
+  j.field("curve", run.force.curve == ForceCurve::Exponential ? "exponential" : "linear");
+  j.field("max_force", run.force.max_force).field("max_torque", run.force.max_torque);
+  j.field("safety_distance", run.force.safety_distance).field("cutoff", run.force.cutoff);
+  j.field("decay_length", run.force.decay_length);
+  j.end_object();
+  j.field("cutoff", run.force.cutoff);
+  j.field("reference_every", opt.reference_every).field("local_reps", opt.local_reps);
+  j.field("force_batches", opt.force_reps).field("force_batch_calls", kForceBatch);
+  j.field("contact_poses", static_cast<int>(rows_of(run, "precise", true).size()));
+  j.field("reference_poses", static_cast<int>(accuracy(run, "precise").poses));
+  j.field("seconds", run.seconds);
+#ifdef PROX_BENCH_WITH_FCL
+  j.field("fcl", true).field("fcl_version", FCL_VERSION);
+#else
+  j.field("fcl", false);
+#endif
+  j.field("coal", false).field("peer_note", kPeerNote);
+
+  j.key("meshes").begin_array();
+  j.begin_object();
+  j.field("name", model.name).field("used_as", "A and B");
+  j.field("triangles", static_cast<long long>(model.mesh.triangle_count()));
+  j.field("vertices", static_cast<long long>(model.mesh.vertex_count()));
+  j.field("size", model.size);
+  const SnchStats& st = model.snch->stats();
+  j.field("snch_nodes", static_cast<long long>(st.nodes))
+      .field("snch_depth", static_cast<long long>(st.depth));
+  j.field("snch_unbounded_leaves", static_cast<long long>(st.unbounded_leaves));
+  j.field("snch_build_ms", median(model.snch_build_seconds) * 1e3);
+  j.field("snch_memory_bytes", st.memory_bytes);
+#ifdef PROX_BENCH_WITH_FCL
+  j.field("fcl_build_ms", median(model.fcl_build_seconds) * 1e3);
+  j.field("fcl_memory_bytes", model.fcl_memory_bytes);
+#endif
+  j.end_object();
+  j.end_array();
+
+  const double tolerance = 1e-9 * model.size;
+  j.key("methods").begin_object();
+  for (const char* m : {"precise", "original"}) {
+    j.key(m).begin_object();
+    both(j, run, m, "query_ms", &Row::query_ms);
+    both(j, run, m, "global_ms", &Row::global_ms);
+    both(j, run, m, "reduction_ms", &Row::reduction_ms);
+    both(j, run, m, "local_ms", &Row::local_ms);
+    both(j, run, m, "force_eval_ns", &Row::force_eval_ns);
+    both(j, run, m, "candidates", &Row::candidates);
+    both(j, run, m, "lmds", &Row::lmds);
+    both(j, run, m, "node_pairs", &Row::node_pairs);
+    both(j, run, m, "leaf_pairs", &Row::leaf_pairs);
+    both(j, run, m, "reduction_cache_hits", &Row::reduction_cache_hits);
+    both(j, run, m, "local_in", &Row::local_in);
+    both(j, run, m, "local_cache_hits", &Row::local_cache_hits);
+    const auto contact = rows_of(run, m, true);
+    j.key("reduction_ratio").begin_object();
+    j.field("overall", reduction_ratio(contact, false)).field("max", reduction_ratio(contact, true));
+    j.end_object();
+    const Accuracy a = accuracy(run, m);
+    j.key("accuracy").begin_object();
+    j.field("poses", a.poses).field("reference_lmds", a.reference).field("found", a.found);
+    j.field("match_tolerance", tolerance);
+    j.field("recall", fraction(a.recalled, a.reference)).field("precision", fraction(a.confirmed, a.found));
+    j.field("recall_2mm", fraction(a.recalled_loose, a.reference));
+    j.field("precision_2mm", fraction(a.confirmed_loose, a.found));
+    j.field("poses_missing_every_lmd", a.missed_minimum);
+    j.field("min_distance_error_max", a.min_error);
+    j.field("min_distance_error_max_over_size", a.min_error / model.size);
+    j.field("force_error_max", a.force_error).field("force_error_median", a.force_error_median);
+    j.field("torque_error_max", a.torque_error);
+    j.field("local_recall", fraction(a.local_recalled, a.reference));
+    j.field("local_precision", fraction(a.local_confirmed, a.local_found));
+    j.end_object();
+    const Smoothness s = smoothness(rows_of(run, m, false));
+    j.key("smoothness").begin_object();
+    j.field("max_force_jump", s.max_jump).field("total_variation", s.total_variation);
+    j.field("max_torque_jump", s.max_torque_jump);
+    j.end_object();
+    j.end_object();
+  }
+  for (const char* m : {"min-distance", "fcl", "reference"}) {
+    if (rows_of(run, m, false).empty()) continue;
+    j.key(m).begin_object();
+    both(j, run, m, "query_ms", &Row::query_ms);
+    if (std::string(m) != "reference") {
+      const auto rows = rows_of(run, m, false);
+      j.field("min_distance_error_max", maximum(values(rows, &Row::min_distance_error)));
+      j.field("min_distance_error_max_over_size",
+              maximum(values(rows, &Row::min_distance_error)) / model.size);
+    } else {
+      const Smoothness s = smoothness(rows_of(run, m, false));
+      j.key("smoothness").begin_object();
+      j.field("max_force_jump", s.max_jump).field("total_variation", s.total_variation);
+      j.field("max_torque_jump", s.max_torque_jump);
+      j.end_object();
+    }
+    j.end_object();
+  }
+  j.end_object();
+
+  j.key("ratios").begin_object();
+  auto ratio_of_medians = [&](const char* num, const char* den, double Row::*field, bool contact) {
+    return ratio(median(values(rows_of(run, num, contact), field)),
+                 median(values(rows_of(run, den, contact), field)));
+  };
+  for (const bool contact : {false, true}) {
+    j.key(contact ? "contact" : "all").begin_object();
+    j.key("precise_over_original").begin_object();
+    j.field("query_ms", ratio_of_medians("precise", "original", &Row::query_ms, contact));
+    j.field("global_ms", ratio_of_medians("precise", "original", &Row::global_ms, contact));
+    j.field("reduction_ms", ratio_of_medians("precise", "original", &Row::reduction_ms, contact));
+    j.field("local_ms", ratio_of_medians("precise", "original", &Row::local_ms, contact));
+    j.field("force_eval_ns", ratio_of_medians("precise", "original", &Row::force_eval_ns, contact));
+    j.end_object();
+    for (const char* num : {"precise", "original", "min-distance"}) {
+      if (rows_of(run, "fcl", false).empty()) break;
+      const auto r = pose_ratios(run, num, "fcl", contact);
+      j.key(std::string(num) + "_over_fcl").begin_object();
+      j.field("per_pose_median", median(r)).field("per_pose_p99", percentile(r, 0.99));
+      j.field("of_medians", ratio_of_medians(num, "fcl", &Row::query_ms, contact));
+      j.end_object();
+    }
+    j.end_object();
+  }
+  j.end_object();
+
+  // The targets of issue 5 this scene can measure.
+  const Accuracy pa = accuracy(run, "precise");
+  j.key("targets").begin_object();
+  if (!rows_of(run, "fcl", false).empty()) {
+    j.field("precise_query_over_fcl_per_pose_median", median(pose_ratios(run, "precise", "fcl", false)));
+    j.field("precise_query_over_fcl_per_pose_median_contact",
+            median(pose_ratios(run, "precise", "fcl", true)));
+  }
+  j.field("precise_local_p99_us",
+          percentile(values(rows_of(run, "precise", true), &Row::local_ms), 0.99) * 1e3);
+  j.field("precise_recall", fraction(pa.recalled, pa.reference));
+  j.field("precise_precision", fraction(pa.confirmed, pa.found));
+  j.field("precise_min_distance_error_over_size", pa.min_error / model.size);
+  j.end_object();
+  j.end_object();
+  return j.str() + "\n";
+}
+
+std::string csv(const SceneRun& run) {
+  std::string out = "step,method";
+  for (const Column& c : columns()) out += std::string(",") + c.first;
+  out += '\n';
+  char buf[64];
+  for (const Row& r : run.rows) {
+    out += std::to_string(r.step) + "," + r.method;
+    for (const Column& c : columns()) {
+      const double v = c.second(r);
+      out += ',';
+      if (std::isfinite(v)) {
+        std::snprintf(buf, sizeof buf, "%.9g", v);
+        out += buf;
+      }
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+// ---- the run -------------------------------------------------------------------
+
+SceneRun run_scene(const Scene& scene, const Model& model, const Options& opt) {
+  SceneRun run;
+  run.scene = &scene;
+  run.force = scene.soft ? soft_force_settings() : hard_force_settings();
+  const double cutoff = run.force.cutoff;
+  const auto start = Clock::now();
+  run.path = make_path(scene, model, model, opt.poses);
+  run.path_seconds = seconds_since(start);
+  const double tolerance = 1e-9 * model.size;
+
+  PairState state;
+  MethodState methods[2] = {{Method::Precise, {}, {}, {}}, {Method::Original, {}, {}, {}}};
+  std::vector<LmdPair> scratch;
+#ifdef PROX_BENCH_WITH_FCL
+  const fcl::Transform3d fcl_a = to_fcl(Pose{});
+  fcl::DistanceRequestd request;
+#endif
+  for (std::size_t i = 0; i < run.path.size(); ++i) {
+    const PosePoint& p = run.path[i];
+    const PairQuery q = make_query(model, model, p.pose, cutoff);
+    const Vec3 reference_point = p.pose.apply(model.box_centre);
+    Row base;
+    base.step = static_cast<int>(i);
+    base.s = p.s, base.x = p.x, base.target_gap = p.target_gap;
+    const std::size_t first_row = run.rows.size();
+
+    for (MethodState& ms : methods) {
+      Row r = base;
+      r.method = method_name(ms.method);
+      LocalTracker& tracker = ms.method == Method::Precise ? state.precise : state.original;
+      // The local thread: the previous step's set carried to this pose.
+      std::vector<double> local_times;
+      LocalTrackingStats local;
+      for (int k = 0; k < std::max(1, opt.local_reps); ++k) {
+        ms.local = ms.tracked;
+        local = LocalTrackingStats{};
+        tracker.update(q, ms.local, local);
+        local_times.push_back(local.seconds);
+      }
+      r.local_ms = median(local_times) * 1e3;
+      r.local_in = local.pairs_in, r.local_out = local.pairs_out;
+      r.local_cache_hits = double(local.cache_hits);
+      r.local_distance_evaluations = double(local.distance_evaluations);
+      // The global thread: search and reduction.
+      ProximityResult res;
+      find_lmds(q, ms.method, state, res);
+      r.global_ms = res.global.seconds * 1e3;
+      r.reduction_ms = (res.reduction[0].seconds + res.reduction[1].seconds) * 1e3;
+      r.query_ms = r.global_ms + r.reduction_ms;
+      r.candidates = res.candidates;
+      r.lmds = double(res.lmds.size());
+      r.node_pairs = double(res.global.node_pairs), r.leaf_pairs = double(res.global.leaf_pairs);
+      r.visibility_rejections = double(res.global.visibility_rejections);
+      r.normal_rejections = double(res.global.normal_rejections);
+      r.distance_evaluations = double(res.global.distance_evaluations);
+      r.reduction_cache_hits = double(res.reduction[0].cache_hits + res.reduction[1].cache_hits);
+      r.min_distance = res.min_distance >= 0.0 ? res.min_distance : kNaN;
+      // The haptic loop: the force from the current set.
+      const Wrench w = tool_wrench(run.force, res.lmds, reference_point);
+      r.force = w.force, r.torque = w.torque;
+      r.force_eval_ns = time_force(run.force, res.lmds, reference_point, opt.force_reps);
+      ms.current = std::move(res.lmds);
+      run.rows.push_back(r);
+    }
+
+    // Proxima's exact minimum distance: the single-pair query FCL answers.
+    Row md = base;
+    md.method = "min-distance";
+    auto t0 = Clock::now();
+    const double exact = minimum_distance(q, kInf);
+    md.query_ms = seconds_since(t0) * 1e3;
+    md.min_distance = exact;
+    run.rows.push_back(md);
+
+#ifdef PROX_BENCH_WITH_FCL
+    {
+      Row fr = base;
+      fr.method = "fcl";
+      fcl::DistanceResultd result;
+      t0 = Clock::now();
+      const double d =
+          fcl::distance(model.fcl.get(), fcl_a, model.fcl.get(), to_fcl(p.pose), request, result);
+      fr.query_ms = seconds_since(t0) * 1e3;
+      fr.min_distance = d;
+      fr.min_distance_error = std::abs(d - exact);  // agreement with Proxima's exact minimum
+      run.rows.push_back(fr);
+    }
+#endif
+
+    const bool with_reference =
+        opt.reference_every > 0 &&
+        (i % static_cast<std::size_t>(opt.reference_every) == 0 || i + 1 == run.path.size());
+    if (with_reference) {
+      Row rr = base;
+      rr.method = "reference";
+      ProximityResult ref;
+      t0 = Clock::now();
+      find_lmds(q, Method::Reference, state, ref);
+      rr.query_ms = seconds_since(t0) * 1e3;
+      rr.lmds = double(ref.lmds.size());
+      rr.min_distance = ref.min_distance >= 0.0 ? ref.min_distance : kNaN;
+      const Wrench w = tool_wrench(run.force, ref.lmds, reference_point);
+      rr.force = w.force, rr.torque = w.torque;
+      run.rows.push_back(rr);
+      // Errors of this step's rows against the reference.
+      for (std::size_t k = first_row; k < run.rows.size(); ++k) {
+        Row& r = run.rows[k];
+        if (r.method != "precise" && r.method != "original" && r.method != "min-distance") continue;
+        if (r.method == "min-distance") {
+          if (!ref.lmds.empty()) r.min_distance_error = std::abs(r.min_distance - ref.min_distance);
+          continue;
+        }
+        const MethodState& ms = methods[r.method == "precise" ? 0 : 1];
+        r.ref_lmds = double(ref.lmds.size());
+        const auto strict = match(ref.lmds, ms.current, tolerance);
+        const auto loose = match(ref.lmds, ms.current, kLooseMatch);
+        r.recalled = strict.first, r.confirmed = strict.second;
+        r.recalled_loose = loose.first, r.confirmed_loose = loose.second;
+        if (!ref.lmds.empty() && !ms.current.empty())
+          r.min_distance_error = std::abs(r.min_distance - ref.min_distance);
+        r.force_error = glm::length(r.force - w.force);
+        r.torque_error = glm::length(r.torque - w.torque);
+        const auto local = match(ref.lmds, ms.local, tolerance);
+        r.local_recalled = local.first, r.local_confirmed = local.second;
+      }
+    }
+    for (std::size_t k = first_row; k < run.rows.size(); ++k) run.rows[k].exact_min = exact;
+    for (MethodState& ms : methods) ms.tracked = ms.current;
+  }
+  run.seconds = seconds_since(start);
+  return run;
+}
+
+// ---- printing ------------------------------------------------------------------
+
+std::string fmt(double v, const char* format = "%.3f") {
+  if (!std::isfinite(v)) return "-";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+void print_summary(const SceneRun& run) {
+  const Scene& sc = *run.scene;
+  const auto contact_rows = rows_of(run, "precise", true);
+  std::printf("\n== %s: %zu poses (%zu within the %.0f mm cutoff), %.1f s (path %.1f s)\n", sc.name.c_str(),
+              run.path.size(), contact_rows.size(), run.force.cutoff * 1e3, run.seconds, run.path_seconds);
+  std::printf("   %s\n", sc.description.c_str());
+  std::printf("   times over the poses in contact: median / p99\n");
+  std::printf("   %-13s %19s %17s %17s %19s %15s\n", "method", "global+reduction ms", "global ms",
+              "reduction ms", "local update us", "force eval ns");
+  for (const char* m : {"precise", "original", "min-distance", "fcl", "reference"}) {
+    const auto rows = rows_of(run, m, true);
+    if (rows.empty()) continue;
+    auto pair = [&](double Row::*f, double scale, const char* format) {
+      const auto v = values(rows, f);
+      return fmt(median(v) * scale, format) + " / " + fmt(percentile(v, 0.99) * scale, format);
+    };
+    std::printf("   %-13s %19s %17s %17s %19s %15s\n", m, pair(&Row::query_ms, 1.0, "%.3f").c_str(),
+                pair(&Row::global_ms, 1.0, "%.3f").c_str(), pair(&Row::reduction_ms, 1.0, "%.3f").c_str(),
+                pair(&Row::local_ms, 1e3, "%.1f").c_str(), pair(&Row::force_eval_ns, 1.0, "%.0f").c_str());
+  }
+  std::printf("   %-9s %9s %9s %9s %8s %9s %9s %11s %10s %10s %9s\n", "method", "max LMDs", "max cand",
+              "reduction", "recall", "precision", "recall2mm", "max dmin err", "max |dF| N", "max jump N",
+              "TV N");
+  for (const char* m : {"precise", "original"}) {
+    const Accuracy a = accuracy(run, m);
+    const Smoothness s = smoothness(rows_of(run, m, false));
+    const auto all = rows_of(run, m, false);
+    std::printf("   %-9s %9s %9s %9s %8s %9s %9s %11s %10s %10s %9s\n", m,
+                fmt(maximum(values(all, &Row::lmds)), "%.0f").c_str(),
+                fmt(maximum(values(all, &Row::candidates)), "%.0f").c_str(),
+                (fmt(reduction_ratio(rows_of(run, m, true), false), "%.1f") + "x").c_str(),
+                fmt(fraction(a.recalled, a.reference), "%.4f").c_str(),
+                fmt(fraction(a.confirmed, a.found), "%.4f").c_str(),
+                fmt(fraction(a.recalled_loose, a.reference), "%.4f").c_str(),
+                fmt(a.min_error, "%.2e").c_str(), fmt(a.force_error, "%.4f").c_str(),
+                fmt(s.max_jump, "%.4f").c_str(), fmt(s.total_variation, "%.3f").c_str());
+  }
+  const Smoothness rs = smoothness(rows_of(run, "reference", false));
+  if (std::isfinite(rs.max_jump))
+    std::printf("   %-9s %87s %10s %9s\n", "reference", "", fmt(rs.max_jump, "%.4f").c_str(),
+                fmt(rs.total_variation, "%.3f").c_str());
+  auto med_ratio = [&](const char* num, const char* den, double Row::*f) {
+    return fmt(ratio(median(values(rows_of(run, num, true), f)), median(values(rows_of(run, den, true), f))),
+               "%.2f");
+  };
+  std::printf(
+      "   precise / original (medians in contact): global+reduction %s, global %s, reduction %s, local %s\n",
+      med_ratio("precise", "original", &Row::query_ms).c_str(),
+      med_ratio("precise", "original", &Row::global_ms).c_str(),
+      med_ratio("precise", "original", &Row::reduction_ms).c_str(),
+      med_ratio("precise", "original", &Row::local_ms).c_str());
+  if (!rows_of(run, "fcl", false).empty()) {
+    const auto all = pose_ratios(run, "precise", "fcl", false), in = pose_ratios(run, "precise", "fcl", true);
+    const auto md = pose_ratios(run, "min-distance", "fcl", false);
+    std::printf(
+        "   precise (whole LMD set) / FCL distance (one pair), per pose: median %s (in contact %s), p99 %s\n",
+        fmt(median(all), "%.2f").c_str(), fmt(median(in), "%.2f").c_str(),
+        fmt(percentile(all, 0.99), "%.2f").c_str());
+    std::printf(
+        "   Proxima min-distance / FCL distance (both one pair), per pose: median %s; FCL agrees with "
+        "Proxima's exact minimum to %s m\n",
+        fmt(median(md), "%.2f").c_str(),
+        fmt(maximum(values(rows_of(run, "fcl", false), &Row::min_distance_error)), "%.1e").c_str());
+  }
+}
+
+const char* kUsage =
+    "usage: proxima_bench [--scene NAME|all] [--poses N] [--out DIR] [--reference-every K]\n"
+    "                     [--local-reps R] [--force-reps R] [--list]";
+
+[[noreturn]] void usage_error(const std::string& message) { throw UserError(message + "\n" + kUsage); }
+
+int parse_int(const std::string& text, const char* what, int lo) {
+  char* end = nullptr;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || v < lo || v > 10000000)
+    usage_error(std::string(what) + ": '" + text + "' is not a whole number >= " + std::to_string(lo));
+  return static_cast<int>(v);
+}
+
+int run(int argc, char** argv) {
+  Options opt;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if (i + 1 >= argc) usage_error("missing value after " + a);
+      return argv[++i];
+    };
+    if (a == "--scene")
+      opt.scene = next();
+    else if (a == "--poses")
+      opt.poses = parse_int(next(), "--poses", 2);
+    else if (a == "--out")
+      opt.out = next();
+    else if (a == "--reference-every")
+      opt.reference_every = parse_int(next(), "--reference-every", 0);
+    else if (a == "--local-reps")
+      opt.local_reps = parse_int(next(), "--local-reps", 1);
+    else if (a == "--force-reps")
+      opt.force_reps = parse_int(next(), "--force-reps", 1);
+    else if (a == "--list") {
+      for (const Scene& s : scenes()) std::printf("%-11s %s\n", s.name.c_str(), s.description.c_str());
+      return 0;
+    } else if (a == "--help" || a == "-h") {
+      std::printf("%s\nsee docs/benchmarks.md\n", kUsage);
+      return 0;
+    } else
+      usage_error("unknown option '" + a + "'");
+  }
+  // `all` runs each distinct scene once: paper-hard is path-t.
+  std::vector<const Scene*> chosen;
+  for (const Scene& s : scenes()) {
+    if (opt.scene == s.name || (opt.scene == "all" && s.name != "paper-hard")) chosen.push_back(&s);
+  }
+  if (chosen.empty()) usage_error("--scene: no scene '" + opt.scene + "' (try --list)");
+  std::filesystem::create_directories(opt.out);
+
+  const auto model = load_model("bunny.obj");
+  std::printf(
+      "proxima_bench: bunny vs bunny, %u triangles each; SNCH %u nodes, built in %.1f ms (median of %d), "
+      "%.2f MiB",
+      model->mesh.triangle_count(), model->snch->stats().nodes, median(model->snch_build_seconds) * 1e3,
+      kBuildRepetitions, double(model->snch->stats().memory_bytes) / (1 << 20));
+#ifdef PROX_BENCH_WITH_FCL
+  std::printf("; FCL %s OBBRSS BVH built in %.1f ms, %.2f MiB\n", FCL_VERSION,
+              median(model->fcl_build_seconds) * 1e3, double(model->fcl_memory_bytes) / (1 << 20));
+#else
+  std::printf("; FCL: not built in (PROX_BENCH_WITH_FCL=OFF)\n");
+#endif
+  std::printf("%s Coal is not measured yet.\n", kPeerNote);
+
+  for (const Scene* s : chosen) {
+    const SceneRun r = run_scene(*s, *model, opt);
+    write_file(opt.out + "/" + s->name + ".csv", csv(r));
+    write_file(opt.out + "/" + s->name + ".json", summary_json(r, *model, opt));
+    print_summary(r);
+  }
+  std::printf("\nper-step CSV and summary JSON per scene written to %s/\n", opt.out.c_str());
+  return 0;
+}
+
+}  // namespace
+}  // namespace prox::bench
+
+int main(int argc, char** argv) {
+  try {
+    return prox::bench::run(argc, argv);
+  } catch (const prox::bench::UserError& e) {
+    std::fprintf(stderr, "proxima_bench: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "proxima_bench: %s\n", e.what());
+    return 1;
+  }
+}

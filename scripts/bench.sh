@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The full scene benchmark (docs/benchmarks.md): builds Release with the
+# benchmarks and FCL on, runs every scene of proxima_bench at full size (a few
+# minutes; the machine should be otherwise idle), and makes the plots and
+# tables in docs/benchmarks/. Per-step CSV and summary JSON go to
+# build/bench-results/. Extra arguments go to proxima_bench (e.g. --poses 200,
+# --reference-every 10, --scene path-r).
+# Works on a fresh Debian 12 machine; installs what it needs (matplotlib from
+# PyPI into build/bench-venv).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+. scripts/deps.sh
+need_packages "${CORE_PACKAGES[@]}" "${BENCH_PACKAGES[@]}"
+
+jobs=$(( $(nproc) < 2 ? $(nproc) : 2 ))
+cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DPROX_WARNINGS_AS_ERRORS=ON \
+  -DPROX_BUILD_BENCHMARKS=ON -DPROX_BENCH_WITH_FCL=ON >/dev/null
+cmake --build build/release --target proxima_bench -j "$jobs"
+
+if [ ! -x build/bench-venv/bin/python ]; then
+  python3 -m venv build/bench-venv
+fi
+build/bench-venv/bin/python -c "import matplotlib" 2>/dev/null ||
+  build/bench-venv/bin/pip install --quiet matplotlib
+
+mkdir -p build/bench-results
+{
+  echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
+  echo "commit: $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- sdk 2>/dev/null || echo ' with uncommitted changes in sdk/')"
+  lscpu | grep -E "^(Model name|CPU\(s\)|Thread|Core|Socket|CPU max MHz|Hypervisor vendor|L2 cache|L3 cache):" || true
+} | tee build/bench-results/machine.txt
+echo "== proxima_bench --scene all --out build/bench-results $*"
+build/release/bench/proxima_bench --scene all --out build/bench-results "$@" | tee build/bench-results.txt
+build/bench-venv/bin/python bench/plot.py build/bench-results docs/benchmarks
