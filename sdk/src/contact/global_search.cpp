@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <set>
+#include <tuple>
 #include <unordered_map>
 
 namespace prox {
@@ -187,30 +189,22 @@ bool any_closer_than(const PairQuery& q, double distance) {
   return closest_pair(q, distance, true, nullptr, nullptr) < distance;
 }
 
-namespace {
-
-std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; }
-
-// Triangles around a feature: N(vertex) its one-ring, N(edge) the triangles
-// sharing it, N(face) the triangle.
-void neighbourhood(const Mesh& mesh, std::uint32_t t, Feature f, std::vector<std::uint32_t>& out) {
+void feature_neighbourhood(const Mesh& mesh, std::uint32_t t, Feature f, std::vector<std::uint32_t>& out) {
   out.clear();
   switch (f.kind) {
     case FeatureKind::Vertex: {
       const std::uint32_t v = mesh.indices(t)[f.index];
-      out.assign(mesh.vertex_triangles_begin(v), mesh.vertex_triangles_end(v));
+      out.insert(out.end(), mesh.vertex_triangles_begin(v), mesh.vertex_triangles_end(v));
       return;
     }
     case FeatureKind::Edge:
-      out.assign(mesh.edge_triangles_begin(t, f.index), mesh.edge_triangles_end(t, f.index));
+      out.insert(out.end(), mesh.edge_triangles_begin(t, f.index), mesh.edge_triangles_end(t, f.index));
       return;
     case FeatureKind::Face:
       out.push_back(t);
       return;
   }
 }
-
-}  // namespace
 
 void reference_lmds(const PairQuery& q, std::vector<LmdPair>& out) {
   const Frames frames(q);
@@ -233,13 +227,13 @@ void reference_lmds(const PairQuery& q, std::vector<LmdPair>& out) {
                                glm::length(mb.bounds().max - mb.bounds().min));
   const double tolerance = 1e-12 * size;
   std::vector<std::uint32_t> around_a, around_b;
-  std::vector<std::pair<MeshFeature, MeshFeature>> seen;
+  std::set<std::tuple<int, std::uint32_t, int, std::uint32_t>> seen;  // feature pairs already output
   for (const std::uint64_t key : order) {
     const geometry::TriangleDistance& d = near.at(key);
     if (d.intersects || d.distance > q.cutoff) continue;
     const auto ta = static_cast<std::uint32_t>(key >> 32), tb = static_cast<std::uint32_t>(key & 0xFFFFFFFFu);
-    neighbourhood(ma, ta, d.feature_a, around_a);
-    neighbourhood(mb, tb, d.feature_b, around_b);
+    feature_neighbourhood(ma, ta, d.feature_a, around_a);
+    feature_neighbourhood(mb, tb, d.feature_b, around_b);
     bool local_minimum = true;
     for (std::uint32_t na : around_a) {
       for (std::uint32_t nb : around_b) {
@@ -255,8 +249,7 @@ void reference_lmds(const PairQuery& q, std::vector<LmdPair>& out) {
     }
     if (!local_minimum) continue;
     const MeshFeature fa = mesh_feature(ma, ta, d.feature_a), fb = mesh_feature(mb, tb, d.feature_b);
-    if (std::find(seen.begin(), seen.end(), std::make_pair(fa, fb)) != seen.end()) continue;
-    seen.emplace_back(fa, fb);
+    if (!seen.emplace(static_cast<int>(fa.kind), fa.id, static_cast<int>(fb.kind), fb.id).second) continue;
     out.push_back(make_pair(q, ta, tb, d.point_a, d.point_b, d.distance, d.feature_a, d.feature_b));
   }
 }

@@ -23,6 +23,14 @@ struct MeshFeature {
 
 MeshFeature mesh_feature(const Mesh& mesh, std::uint32_t triangle, Feature f);
 
+// The triangles around feature f of triangle t, where local tracking looks
+// next (paper Fig. 5): the triangle for a face, the triangles sharing an edge,
+// a vertex's one-ring. Replaces `out`'s contents.
+void feature_neighbourhood(const Mesh& mesh, std::uint32_t t, Feature f, std::vector<std::uint32_t>& out);
+
+// A triangle pair as one 64-bit key.
+inline std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; }
+
 struct LmdPair {
   std::uint32_t tri_a = 0, tri_b = 0;
   Vec3 point_a{0.0}, point_b{0.0};  // closest points, world coordinates

@@ -12,31 +12,12 @@
 namespace prox {
 namespace {
 
-std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} << 32) | b; }
-
 std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser: spreads pair keys over the table
   x ^= x >> 30;
   x *= 0xbf58476d1ce4e5b9ULL;
   x ^= x >> 27;
   x *= 0x94d049bb133111ebULL;
   return x ^ (x >> 31);
-}
-
-void neighbourhood(const Mesh& mesh, std::uint32_t t, Feature f, std::vector<std::uint32_t>& out) {
-  out.clear();
-  switch (f.kind) {
-    case FeatureKind::Vertex: {
-      const std::uint32_t v = mesh.indices(t)[f.index];
-      out.insert(out.end(), mesh.vertex_triangles_begin(v), mesh.vertex_triangles_end(v));
-      return;
-    }
-    case FeatureKind::Edge:
-      out.insert(out.end(), mesh.edge_triangles_begin(t, f.index), mesh.edge_triangles_end(t, f.index));
-      return;
-    case FeatureKind::Face:
-      out.push_back(t);
-      return;
-  }
 }
 
 // A walk gives up after this many moves; real walks take a handful.
@@ -123,8 +104,8 @@ void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalT
     for (int step = 0; step < kMaxSteps && !duplicate; ++step) {
       const geometry::TriangleDistance current = entries_[here].result;
       if (current.intersects) break;
-      neighbourhood(ma, ta, current.feature_a, around_a_);
-      neighbourhood(mb, tb, current.feature_b, around_b_);
+      feature_neighbourhood(ma, ta, current.feature_a, around_a_);
+      feature_neighbourhood(mb, tb, current.feature_b, around_b_);
       std::uint32_t best = here, best_a = ta, best_b = tb;
       double best_distance = current.distance;
       for (std::uint32_t na : around_a_)

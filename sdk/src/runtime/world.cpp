@@ -15,8 +15,6 @@ std::uint32_t free_slot(std::vector<Slot>& slots) {
   return static_cast<std::uint32_t>(slots.size() - 1);
 }
 
-std::uint64_t pair_key(std::uint32_t tool, std::uint32_t body) { return (std::uint64_t{tool} << 32) | body; }
-
 bool overlap(const Aabb& a, const Aabb& b) {
   return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y &&
          a.min.z <= b.max.z && b.min.z <= a.max.z;
