@@ -271,6 +271,7 @@ int lmd(Args& args) {
     j.key("candidates").value(static_cast<long long>(r.candidates));
     j.key("node_pairs").value(static_cast<long long>(r.global.node_pairs));
     j.key("leaf_pairs").value(static_cast<long long>(r.global.leaf_pairs));
+    j.key("plane_rejections").value(static_cast<long long>(r.global.plane_rejections));
     j.key("visibility_rejections").value(static_cast<long long>(r.global.visibility_rejections));
     j.key("normal_rejections").value(static_cast<long long>(r.global.normal_rejections));
     j.key("distance_evaluations").value(static_cast<long long>(r.global.distance_evaluations));

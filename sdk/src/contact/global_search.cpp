@@ -35,6 +35,16 @@ using detail::descend;
 using detail::Frames;
 using detail::moved;
 
+// Whether every vertex of `other` is more than `cutoff` from the plane of
+// `t` (unit normal `n`; a zero normal proves nothing), all on one side.
+bool beyond_plane(const Triangle& t, const Vec3& n, const Triangle& other, double cutoff) {
+  if (!(glm::dot(n, n) > 0.0)) return false;
+  const double d0 = glm::dot(other.v[0] - t.v[0], n);
+  const double d1 = glm::dot(other.v[1] - t.v[0], n);
+  const double d2 = glm::dot(other.v[2] - t.v[0], n);
+  return (d0 > cutoff && d1 > cutoff && d2 > cutoff) || (d0 < -cutoff && d1 < -cutoff && d2 < -cutoff);
+}
+
 LmdPair make_pair(const PairQuery& q, std::uint32_t ta, std::uint32_t tb, const Vec3& pa_local_a,
                   const Vec3& pb_local_a, double distance, Feature fa, Feature fb) {
   LmdPair r;
@@ -64,6 +74,14 @@ void global_search_precise(const PairQuery& q, std::vector<LmdPair>& out, Global
   descend(q, frames, q.use_cones, stats, [&](std::uint32_t ta, std::uint32_t tb) {
     const Triangle a = ma.triangle(ta);
     const Triangle b = moved(mb.triangle(tb), frames.b_to_a);
+    // A cheap lower bound first (about 10 ns, the visibility test 140): when
+    // one triangle lies wholly on one side of the other's plane, farther
+    // than the cutoff, so does the pair.
+    if (beyond_plane(a, ma.face_normal(ta), b, q.cutoff) ||
+        beyond_plane(b, frames.b_to_a.rotate(mb.face_normal(tb)), a, q.cutoff)) {
+      ++stats.plane_rejections;
+      return;
+    }
     Vec3 na[3], nb[3];
     double sa[3], sb[3];
     for (int k = 0; k < 3; ++k) {

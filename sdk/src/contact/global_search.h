@@ -16,6 +16,7 @@ struct GlobalSearchStats {
   std::uint64_t rejected_g3 = 0;            // cones miss the lines between the spheres
   std::uint64_t leaf_pairs = 0;             // triangle pairs reaching the leaf tests
   std::uint64_t visibility_rejections = 0;  // precise: culled by the visibility pre-test
+  std::uint64_t plane_rejections = 0;       // precise: one triangle beyond the other's plane by more than the cutoff
   std::uint64_t normal_rejections = 0;      // original: culled by the G5 normal check
   std::uint64_t distance_evaluations = 0;   // exact distances (precise) or 7x7 samplings (original)
   std::uint64_t candidates = 0;             // pairs output, before any reduction
