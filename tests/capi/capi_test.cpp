@@ -346,6 +346,47 @@ TEST_F(CApi, ContactsWrenchAndStats) {
   EXPECT_EQ(w.force.z, 0.0);
 }
 
+TEST_F(CApi, IntersectionPolylines) {
+  const proxBodyId rock = body(PROX_BODY_STATIC, at(0));
+  // The tool cube pushed into the rock by (0.5, 0.3, 0.4): the surfaces cross
+  // in one closed loop of length 0.6 + 0.7 + 0.6 + 0.5 + 0.7 + 0.5 = 3.6.
+  const proxBodyId tool = body(PROX_BODY_TOOL, at(0.5, 0.3, 0.4));
+  int32_t points = -1, lines = -1;
+  EXPECT_FAILS(proxBody_GetIntersections(tool, nullptr, 0, nullptr, nullptr, 0, &lines),
+               PROX_ERROR_INVALID_ARGUMENT, "pointCount is NULL");
+  EXPECT_FAILS(proxBody_GetIntersections(tool, nullptr, 0, &points, nullptr, 0, nullptr),
+               PROX_ERROR_INVALID_ARGUMENT, "lineCount is NULL");
+  EXPECT_FAILS(proxBody_GetIntersections(tool, nullptr, -1, &points, nullptr, 0, &lines),
+               PROX_ERROR_INVALID_ARGUMENT, "negative");
+  EXPECT_FAILS(proxBody_GetIntersections(tool, nullptr, 8, &points, nullptr, 0, &lines),
+               PROX_ERROR_INVALID_ARGUMENT, "points is NULL");
+  EXPECT_FAILS(proxBody_GetIntersections(rock, nullptr, 0, &points, nullptr, 0, &lines),
+               PROX_ERROR_INVALID_ARGUMENT, "PROX_BODY_TOOL");
+  EXPECT_FAILS(proxBody_GetIntersections(tool, nullptr, 0, &points, nullptr, 0, &lines), PROX_ERROR_CAPACITY,
+               "do not fit");
+  ASSERT_EQ(lines, 1);
+  ASSERT_GE(points, 6);
+  std::vector<proxVec3> p(static_cast<std::size_t>(points));
+  proxPolylineInfo info{};
+  ASSERT_OK(proxBody_GetIntersections(tool, p.data(), points, &points, &info, 1, &lines));
+  EXPECT_EQ(info.other.index1, rock.index1);
+  EXPECT_EQ(info.firstPoint, 0);
+  EXPECT_EQ(info.pointCount, points);
+  EXPECT_TRUE(info.closed);
+  double length = 0.0;
+  for (int32_t k = 0; k < points; ++k) {
+    const proxVec3 &u = p[static_cast<std::size_t>(k)], &v = p[static_cast<std::size_t>((k + 1) % points)];
+    length += std::sqrt((u.x - v.x) * (u.x - v.x) + (u.y - v.y) * (u.y - v.y) + (u.z - v.z) * (u.z - v.z));
+  }
+  EXPECT_NEAR(length, 3.6, 1e-12);
+  // Apart: nothing.
+  const proxPose away = at(3, 0, 0);
+  ASSERT_OK(proxBody_SetPose(tool, &away));
+  ASSERT_OK(proxBody_GetIntersections(tool, nullptr, 0, &points, nullptr, 0, &lines));
+  EXPECT_EQ(points, 0);
+  EXPECT_EQ(lines, 0);
+}
+
 TEST_F(CApi, OnlyPairsInRangeCostAnything) {
   // 120 small cubes on a 2 m grid; the tool is near exactly one of them.
   Cube small(0.1);

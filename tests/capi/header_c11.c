@@ -16,6 +16,7 @@ _Static_assert(sizeof(proxContact) == 112, "proxContact");
 _Static_assert(sizeof(proxWrench) == 56, "proxWrench");
 _Static_assert(sizeof(proxWorldStats) == 32, "proxWorldStats");
 _Static_assert(sizeof(proxMeshInfo) == 72, "proxMeshInfo");
+_Static_assert(sizeof(proxPolylineInfo) == 32, "proxPolylineInfo");
 _Static_assert(sizeof(proxResult) == 4, "enums are 32-bit");
 _Static_assert(sizeof(proxBodyType) == 4, "enums are 32-bit");
 

@@ -252,6 +252,26 @@ typedef struct proxWrench {
 /* The force and torque on a tool after the last step. Game thread. */
 PROX_API proxResult proxBody_GetWrench(proxBodyId tool, proxWrench* wrench);
 
+typedef struct proxPolylineInfo {
+  proxBodyId other;   /* the body the tool's surface crosses */
+  int32_t firstPoint; /* index of its first point in the points array */
+  int32_t pointCount;
+  proxBool closed; /* the last point joins the first */
+  int32_t reserved;
+} proxPolylineInfo;
+
+/* Where the tool's surface crosses other bodies' surfaces, at their current
+ * poses: computed on this call (intersections cost nothing unless asked
+ * for). The points of every polyline go to `points` (world frame), one
+ * proxPolylineInfo per polyline to `lines`; both counts are always set, and
+ * when either array is too small what fits is copied and the result is
+ * PROX_ERROR_CAPACITY. Pass capacities of 0 (and NULL arrays) to ask the
+ * sizes. Coplanar overlaps are regions, not curves, and are not listed.
+ * Game thread. */
+PROX_API proxResult proxBody_GetIntersections(proxBodyId tool, proxVec3* points, int32_t pointCapacity,
+                                              int32_t* pointCount, proxPolylineInfo* lines,
+                                              int32_t lineCapacity, int32_t* lineCount);
+
 typedef struct proxWorldStats {
   int32_t bodies, tools;
   int32_t pairsInRange;  /* tool-body pairs the broadphase kept in the last step */

@@ -34,6 +34,7 @@ static_assert(sizeof(proxBodyDef) == 112, "ABI");
 static_assert(sizeof(proxContact) == 112, "ABI");
 static_assert(sizeof(proxWrench) == 56, "ABI");
 static_assert(sizeof(proxWorldStats) == 32, "ABI");
+static_assert(sizeof(proxPolylineInfo) == 32, "ABI");
 static_assert(sizeof(proxMeshInfo) == 68 + 4, "ABI");
 static_assert(sizeof(proxResult) == 4 && sizeof(proxMethod) == 4 && sizeof(proxBodyType) == 4, "ABI");
 
@@ -492,6 +493,54 @@ proxResult proxBody_GetWrench(proxBodyId tool, proxWrench* wrench) {
     const runtime::Handle h = tool_of(tool, w);
     const Wrench& x = w->wrench(h);
     *wrench = {to_c(x.force), to_c(x.torque), x.clipped ? 1 : 0};
+  });
+}
+
+proxResult proxBody_GetIntersections(proxBodyId tool, proxVec3* points, int32_t pointCapacity,
+                                     int32_t* pointCount, proxPolylineInfo* lines, int32_t lineCapacity,
+                                     int32_t* lineCount) {
+  return guard("proxBody_GetIntersections", [&] {
+    need(pointCount, "pointCount");
+    need(lineCount, "lineCount");
+    *pointCount = 0;
+    *lineCount = 0;
+    if (pointCapacity < 0) fail(PROX_ERROR_INVALID_ARGUMENT, "pointCapacity is negative");
+    if (lineCapacity < 0) fail(PROX_ERROR_INVALID_ARGUMENT, "lineCapacity is negative");
+    if (pointCapacity > 0) need(points, "points");
+    if (lineCapacity > 0) need(lines, "lines");
+    runtime::World* w = nullptr;
+    const runtime::Handle h = tool_of(tool, w);
+    std::vector<std::pair<std::uint32_t, Polyline>> found;
+    w->intersections(h, found);
+    int32_t point_total = 0;
+    for (const auto& entry : found) point_total += static_cast<int32_t>(entry.second.points.size());
+    *pointCount = point_total;
+    *lineCount = static_cast<int32_t>(found.size());
+    int32_t next = 0;
+    bool fits = true;
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      const Polyline& line = found[i].second;
+      const auto n = static_cast<int32_t>(line.points.size());
+      if (static_cast<int32_t>(i) < lineCapacity)
+        lines[i] = {{found[i].first + 1, w->body_generation(found[i].first), tool.world},
+                    next,
+                    n,
+                    line.closed ? 1 : 0,
+                    0};
+      else
+        fits = false;
+      for (int32_t k = 0; k < n; ++k) {
+        if (next + k < pointCapacity)
+          points[next + k] = to_c(line.points[static_cast<std::size_t>(k)]);
+        else
+          fits = false;
+      }
+      next += n;
+    }
+    if (!fits)
+      fail(PROX_ERROR_CAPACITY, "the " + std::to_string(*lineCount) + " polylines with " +
+                                    std::to_string(*pointCount) + " points do not fit in capacities " +
+                                    std::to_string(lineCapacity) + " and " + std::to_string(pointCapacity));
   });
 }
 

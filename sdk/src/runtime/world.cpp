@@ -165,4 +165,27 @@ void World::step() {
   stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+void World::intersections(Handle tool_handle, std::vector<std::pair<std::uint32_t, Polyline>>& out) const {
+  out.clear();
+  const BodySlot& tool = bodies_[tool_handle.index];
+  const Aabb tool_box = world_box(tool, 0.0);
+  const MeshData& tool_mesh = *meshes_[tool.mesh].data;
+  for (std::uint32_t o = 0; o < bodies_.size(); ++o) {
+    const BodySlot& other = bodies_[o];
+    if (o == tool_handle.index || !other.alive || !overlap(tool_box, world_box(other, 0.0))) continue;
+    const MeshData& other_mesh = *meshes_[other.mesh].data;
+    const PairQuery q{&other_mesh.mesh,
+                      other_mesh.snch.get(),
+                      other.pose,
+                      &tool_mesh.mesh,
+                      tool_mesh.snch.get(),
+                      tool.pose,
+                      0.0};
+    std::vector<Polyline> lines;
+    PolylineStats stats;
+    intersection_polylines(q, lines, stats);
+    for (Polyline& line : lines) out.emplace_back(o, std::move(line));
+  }
+}
+
 }  // namespace prox::runtime

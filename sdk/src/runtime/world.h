@@ -3,6 +3,7 @@
 #pragma once
 
 #include "contact/force.h"
+#include "contact/polylines.h"
 #include "contact/proximity.h"
 
 #include <cstdint>
@@ -64,6 +65,9 @@ class World {
   const std::vector<Contact>& contacts(Handle tool) const { return bodies_[tool.index].contacts; }
   const Wrench& wrench(Handle tool) const { return bodies_[tool.index].wrench; }
   const StepStats& stats() const { return stats_; }
+  // The intersection polylines of a tool with every body whose box meets
+  // its box, at the current poses; computed on each call.
+  void intersections(Handle tool, std::vector<std::pair<std::uint32_t, Polyline>>& out) const;
   int body_count() const;
   int tool_count() const;
 
