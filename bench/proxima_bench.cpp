@@ -13,6 +13,7 @@
 // K-th pose. Errors are measured against the reference. Per-step figures go to
 // DIR/<scene>.csv, a summary to DIR/<scene>.json, and a readable summary to
 // standard output.
+#include "common/json_writer.h"
 #include "contact/force.h"
 #include "contact/global_search.h"
 #include "contact/proximity.h"
@@ -78,104 +79,7 @@ double ratio(double a, double b) { return std::isfinite(a) && std::isfinite(b) &
 
 // ---- JSON ------------------------------------------------------------------------
 
-// A small indented JSON writer: NaN and infinities become null.
-class Json {
- public:
-  Json& begin_object() { return open('{'); }
-  Json& end_object() { return close('}'); }
-  Json& begin_array() { return open('['); }
-  Json& end_array() { return close(']'); }
-  Json& key(const std::string& k) {
-    item();
-    quoted(k);
-    out_ += ": ";
-    after_key_ = true;
-    return *this;
-  }
-  Json& value(double v) {
-    item();
-    if (!std::isfinite(v)) {
-      out_ += "null";
-    } else {
-      char buf[40];
-      std::snprintf(buf, sizeof buf, "%.10g", v);
-      out_ += buf;
-    }
-    return *this;
-  }
-  Json& value(long long v) {
-    item();
-    out_ += std::to_string(v);
-    return *this;
-  }
-  Json& value(int v) { return value(static_cast<long long>(v)); }
-  Json& value(std::size_t v) { return value(static_cast<long long>(v)); }
-  Json& value(bool v) {
-    item();
-    out_ += v ? "true" : "false";
-    return *this;
-  }
-  Json& value(const std::string& s) {
-    item();
-    quoted(s);
-    return *this;
-  }
-  Json& value(const char* s) { return value(std::string(s)); }
-  Json& vec3(const Vec3& v) {
-    begin_array();
-    inline_ = true;
-    value(v.x).value(v.y).value(v.z);
-    end_array();
-    inline_ = false;
-    return *this;
-  }
-  template <typename T>
-  Json& field(const std::string& k, const T& v) {
-    key(k);
-    return value(v);
-  }
-  const std::string& str() const { return out_; }
-
- private:
-  Json& open(char c) {
-    item();
-    out_ += c;
-    ++depth_;
-    first_ = true;
-    return *this;
-  }
-  Json& close(char c) {
-    --depth_;
-    if (!first_ && !inline_) newline();
-    out_ += c;
-    first_ = false;
-    return *this;
-  }
-  void item() {
-    if (after_key_) {
-      after_key_ = false;
-      return;
-    }
-    if (!first_ && depth_ > 0) out_ += inline_ ? ", " : ",";
-    if (depth_ > 0 && !inline_) newline();
-    first_ = false;
-  }
-  void newline() {
-    out_ += '\n';
-    out_.append(static_cast<std::size_t>(2 * depth_), ' ');
-  }
-  void quoted(const std::string& s) {
-    out_ += '"';
-    for (char c : s) {
-      if (c == '"' || c == '\\') out_ += '\\';
-      out_ += c;
-    }
-    out_ += '"';
-  }
-  std::string out_;
-  int depth_ = 0;
-  bool first_ = true, after_key_ = false, inline_ = false;
-};
+using Json = JsonWriter;
 
 void write_file(const std::string& path, const std::string& text) {
   FILE* f = std::fopen(path.c_str(), "w");

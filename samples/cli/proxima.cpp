@@ -17,7 +17,7 @@
 #if PROX_WITH_GLTF
 #include "io/gltf.h"
 #endif
-#include "json.h"
+#include "common/json_writer.h"
 
 #include <proxima/version.h>
 
@@ -35,6 +35,8 @@
 
 namespace prox::cli {
 namespace {
+
+using Json = JsonWriter;
 
 const char* kUsage =
     "usage:\n"
