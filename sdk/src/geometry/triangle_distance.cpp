@@ -112,11 +112,9 @@ Vec3 robust_normal(const Triangle& t) {
   return n;
 }
 
-}  // namespace
-
-Vec3 closest_point_on_triangle(const Vec3& p, const Triangle& t) {
+// With the triangle's robust_normal computed once by the caller.
+Vec3 closest_point_with_normal(const Vec3& p, const Triangle& t, const Vec3& n) {
   const Vec3 &a = t.v[0], &b = t.v[1], &c = t.v[2];
-  const Vec3 n = robust_normal(t);
   const double nn = length2(n);
   if (nn > 0.0) {
     // Project onto the plane; keep the projection when it falls inside
@@ -135,6 +133,12 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Triangle& t) {
     if (d2 < best_d2) best = x, best_d2 = d2;
   }
   return best;
+}
+
+}  // namespace
+
+Vec3 closest_point_on_triangle(const Vec3& p, const Triangle& t) {
+  return closest_point_with_normal(p, t, robust_normal(t));
 }
 
 Vec2 closest_params_segment_segment(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
@@ -205,12 +209,15 @@ TriangleDistance triangle_distance(const Triangle& a_world, const Triangle& b_wo
   const bool b_flat = collinear3d(b_world.v[0], b_world.v[1], b_world.v[2]);
 
   CandidateList cand;
-  // Vertex against face. A degenerate triangle's "face" is its edges, which
-  // the edge-edge candidates below already cover.
+  // Vertex against face (each triangle's normal computed once). A degenerate
+  // triangle's "face" is its edges, which the edge-edge candidates cover.
+  const Vec3 normal_a = a_flat ? Vec3(0.0) : robust_normal(a);
+  const Vec3 normal_b = b_flat ? Vec3(0.0) : robust_normal(b);
   for (int i = 0; i < 3; ++i) {
-    if (!b_flat) cand.add(a.v[i], closest_point_on_triangle(a.v[i], b));
-    if (!a_flat) cand.add(closest_point_on_triangle(b.v[i], a), b.v[i]);
+    if (!b_flat) cand.add(a.v[i], closest_point_with_normal(a.v[i], b, normal_b));
+    if (!a_flat) cand.add(closest_point_with_normal(b.v[i], a, normal_a), b.v[i]);
   }
+  // Edge against edge.
   for (int i = 0; i < 3; ++i) {
     const Vec3 &p0 = a.v[i], &p1 = a.v[(i + 1) % 3];
     for (int j = 0; j < 3; ++j) {
