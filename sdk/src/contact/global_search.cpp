@@ -152,8 +152,12 @@ void global_search_original(const PairQuery& q, std::vector<LmdPair>& out, Globa
 
 namespace {
 
-// Branch and bound for the closest pair below `bound`; with `first_below`
-// it returns as soon as any pair is closer than the bound.
+// Branch and bound for the closest pair below `bound`, best first: node
+// pairs come off a heap by the lower bound their spheres give, so the first
+// leaves reached are near the answer and the bound tightens early; the search
+// ends when the nearest pair left cannot beat the best found. At leaves the
+// plane bound of the precise search skips most exact distances. With
+// `first_below` it returns as soon as any pair is closer than the bound.
 double closest_pair(const PairQuery& q, double bound, bool first_below, std::uint32_t* tri_a,
                     std::uint32_t* tri_b) {
   const Frames frames(q);
@@ -162,18 +166,31 @@ double closest_pair(const PairQuery& q, double bound, bool first_below, std::uin
   double best = INFINITY;
   if (ta.nodes().empty() || tb.nodes().empty()) return best;
   double limit = bound;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{0u, 0u}};
-  while (!stack.empty()) {
-    const auto [ia, ib] = stack.back();
-    stack.pop_back();
-    const SnchNode& na = ta.node(ia);
-    const SnchNode& nb = tb.node(ib);
-    const Vec3 cb = frames.b_to_a.apply(nb.center);
-    if (glm::length(cb - na.center) - na.radius - nb.radius > limit) continue;
+  struct Item {
+    double lower;  // no pair below these nodes is closer
+    std::uint32_t a, b;
+    bool operator<(const Item& o) const { return lower > o.lower; }  // min-heap
+  };
+  auto lower_bound = [&](const SnchNode& na, const SnchNode& nb) {
+    return glm::length(frames.b_to_a.apply(nb.center) - na.center) - na.radius - nb.radius;
+  };
+  std::vector<Item> heap;
+  heap.reserve(1024);
+  heap.push_back({lower_bound(ta.root(), tb.root()), 0u, 0u});
+  while (!heap.empty()) {
+    std::pop_heap(heap.begin(), heap.end());
+    const Item item = heap.back();
+    heap.pop_back();
+    if (item.lower > limit) break;  // everything left is farther
+    const SnchNode& na = ta.node(item.a);
+    const SnchNode& nb = tb.node(item.b);
     if (na.is_leaf() && nb.is_leaf()) {
-      const double d = geometry::triangle_distance(q.mesh_a->triangle(na.first),
-                                                   moved(q.mesh_b->triangle(nb.first), frames.b_to_a))
-                           .distance;
+      const Triangle a = q.mesh_a->triangle(na.first);
+      const Triangle b = moved(q.mesh_b->triangle(nb.first), frames.b_to_a);
+      if (beyond_plane(a, q.mesh_a->face_normal(na.first), b, limit) ||
+          beyond_plane(b, frames.b_to_a.rotate(q.mesh_b->face_normal(nb.first)), a, limit))
+        continue;
+      const double d = geometry::triangle_distance(a, b).distance;
       if (d < best) {
         best = d;
         limit = std::min(limit, d);
@@ -181,17 +198,20 @@ double closest_pair(const PairQuery& q, double bound, bool first_below, std::uin
         if (tri_b) *tri_b = nb.first;
         if (d == 0.0 || (first_below && d < bound)) break;
       }
-    } else if (nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius)) {
-      // Nearer child last, so it is searched first and tightens the limit.
-      const double d0 = glm::length(cb - ta.node(na.first).center);
-      const double d1 = glm::length(cb - ta.node(na.second).center);
-      stack.emplace_back(d0 < d1 ? na.second : na.first, ib);
-      stack.emplace_back(d0 < d1 ? na.first : na.second, ib);
+      continue;
+    }
+    auto push = [&](std::uint32_t ia, std::uint32_t ib) {
+      const double lower = lower_bound(ta.node(ia), tb.node(ib));
+      if (lower > limit) return;
+      heap.push_back({lower, ia, ib});
+      std::push_heap(heap.begin(), heap.end());
+    };
+    if (nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius)) {
+      push(na.first, item.b);
+      push(na.second, item.b);
     } else {
-      const double d0 = glm::length(frames.b_to_a.apply(tb.node(nb.first).center) - na.center);
-      const double d1 = glm::length(frames.b_to_a.apply(tb.node(nb.second).center) - na.center);
-      stack.emplace_back(ia, d0 < d1 ? nb.second : nb.first);
-      stack.emplace_back(ia, d0 < d1 ? nb.first : nb.second);
+      push(item.a, nb.first);
+      push(item.a, nb.second);
     }
   }
   return best;
