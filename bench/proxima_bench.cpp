@@ -18,6 +18,7 @@
 #include "contact/global_search.h"
 #include "contact/proximity.h"
 #include "io/obj.h"
+#include "runtime/world.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -918,6 +919,99 @@ int parse_int(const std::string& text, const char* what, int lo) {
   return static_cast<int>(v);
 }
 
+// ---- many bodies -------------------------------------------------------------
+
+// One tool bunny on path T against one static bunny, in two worlds side by
+// side on the same poses: alone, and among `kFarBodies` more static bunnies
+// on a grid out of range. The runtime's broadphase should make the crowd
+// cost (almost) nothing: the step-time ratio is the figure.
+constexpr int kFarBodies = 120;
+
+void run_many_bodies(const Model& model, const Options& opt) {
+  const Scene& path_t = scenes().front();
+  const std::vector<PosePoint> path = make_path(path_t, model, model, opt.poses);
+  // The mesh as arrays again, as an application would hand it to the world.
+  std::vector<double> positions;
+  std::vector<std::uint32_t> indices;
+  for (std::uint32_t v = 0; v < model.mesh.vertex_count(); ++v)
+    positions.insert(positions.end(),
+                     {model.mesh.vertex(v).x, model.mesh.vertex(v).y, model.mesh.vertex(v).z});
+  for (std::uint32_t t = 0; t < model.mesh.triangle_count(); ++t)
+    indices.insert(indices.end(), model.mesh.indices(t).begin(), model.mesh.indices(t).end());
+  auto world_with = [&](int far_bodies) {
+    runtime::World w{runtime::WorldSettings{}};
+    Status status;
+    const MeshInput input{positions.data(), static_cast<std::uint32_t>(positions.size() / 3), indices.data(),
+                          static_cast<std::uint32_t>(indices.size() / 3)};
+    const runtime::Handle mesh = w.create_mesh(input, status);
+    if (!status) throw UserError(status.message());
+    w.create_body(mesh, runtime::BodyType::Static, Pose{}, Vec3(0.0));
+    for (int i = 0; i < far_bodies; ++i)  // a 12 x 10 grid, 0.5 m apart, beyond the path's reach
+      w.create_body(mesh, runtime::BodyType::Static,
+                    Pose{glm::dmat3(1.0), Vec3(0.5 * (i % 12) - 2.75, 0.6 + 0.5 * (i / 12), 0.0)}, Vec3(0.0));
+    const runtime::Handle tool =
+        w.create_body(mesh, runtime::BodyType::Tool, path.front().pose, model.centroid);
+    return std::make_pair(std::move(w), tool);
+  };
+  auto [alone, tool_alone] = world_with(0);
+  auto [crowd, tool_crowd] = world_with(kFarBodies);
+  std::vector<double> alone_ms, crowd_ms, alone_near, crowd_near, overhead_far;
+  int max_in_range = 0, contacts_differ = 0;
+  std::string rows = "step,x,alone_ms,crowd_ms,crowd_pairs_in_range,crowd_pairs_searched,contacts\n";
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    alone.set_pose(tool_alone, path[i].pose);
+    crowd.set_pose(tool_crowd, path[i].pose);
+    alone.step();
+    crowd.step();
+    alone_ms.push_back(alone.stats().seconds * 1e3);
+    crowd_ms.push_back(crowd.stats().seconds * 1e3);
+    max_in_range = std::max(max_in_range, crowd.stats().pairs_in_range);
+    if (alone.stats().pairs_in_range > 0) {
+      alone_near.push_back(alone_ms.back());
+      crowd_near.push_back(crowd_ms.back());
+    } else {
+      overhead_far.push_back(crowd_ms.back() - alone_ms.back());
+    }
+    contacts_differ += alone.stats().contacts != crowd.stats().contacts;
+    char line[256];
+    std::snprintf(line, sizeof line, "%zu,%.9g,%.6f,%.6f,%d,%d,%d\n", i, path[i].x, alone_ms.back(),
+                  crowd_ms.back(), crowd.stats().pairs_in_range, crowd.stats().pairs_searched,
+                  crowd.stats().contacts);
+    rows += line;
+  }
+  // Where the one pair is in range, the crowd should add nothing measurable;
+  // elsewhere both steps are box tests, and the crowd's cost is its boxes.
+  const double ratio = median(crowd_near) / median(alone_near);
+  const double per_body_ns = median(overhead_far) * 1e6 / kFarBodies;
+  Json j;
+  j.begin_object();
+  j.field("scene", "many-bodies");
+  j.field("description", std::string("One tool bunny on path T among 1 + ") + std::to_string(kFarBodies) +
+                             " static bunnies (all but one out of range), against the same path with the one "
+                             "bunny alone, side by side; runtime::World::step, whole step timed.");
+  j.field("poses", static_cast<long long>(path.size()));
+  j.field("bodies", static_cast<long long>(kFarBodies + 2));
+  j.field("alone_step_ms_median", median(alone_ms)).field("alone_step_ms_p99", percentile(alone_ms, 0.99));
+  j.field("crowd_step_ms_median", median(crowd_ms)).field("crowd_step_ms_p99", percentile(crowd_ms, 0.99));
+  j.field("steps_in_range", static_cast<long long>(alone_near.size()));
+  j.field("in_range_alone_step_ms_median", median(alone_near));
+  j.field("in_range_crowd_step_ms_median", median(crowd_near));
+  j.field("in_range_crowd_over_alone", ratio);
+  j.field("out_of_range_overhead_ns_per_far_body", per_body_ns);
+  j.field("max_pairs_in_range", static_cast<long long>(max_in_range));
+  j.field("steps_with_different_contacts", static_cast<long long>(contacts_differ));
+  j.end_object();
+  write_file(opt.out + "/many-bodies.csv", rows);
+  write_file(opt.out + "/many-bodies.json", j.str() + "\n");
+  std::printf("\n== many-bodies: %zu poses, one tool among %d static bunnies (all but one out of range)\n",
+              path.size(), kFarBodies + 1);
+  std::printf("   steps in range (%zu): step median alone %.3f ms, among the crowd %.3f ms (ratio %.3f)\n",
+              alone_near.size(), median(alone_near), median(crowd_near), ratio);
+  std::printf("   steps out of range: the crowd adds %.1f ns per far body per step (median)\n", per_body_ns);
+  std::printf("   pairs in range at most %d; steps whose contacts differ from the lone pair: %d\n",
+              max_in_range, contacts_differ);
+}
+
 int run(int argc, char** argv) {
   Options opt;
   for (int i = 1; i < argc; ++i) {
@@ -940,6 +1034,8 @@ int run(int argc, char** argv) {
       opt.force_reps = parse_int(next(), "--force-reps", 1);
     else if (a == "--list") {
       for (const Scene& s : scenes()) std::printf("%-11s %s\n", s.name.c_str(), s.description.c_str());
+      std::printf("%-11s %s\n", "many-bodies",
+                  "one tool on path T among 121 static bunnies, all but one out of range");
       return 0;
     } else if (a == "--help" || a == "-h") {
       std::printf("%s\nsee docs/benchmarks.md\n", kUsage);
@@ -952,7 +1048,8 @@ int run(int argc, char** argv) {
   for (const Scene& s : scenes()) {
     if (opt.scene == s.name || (opt.scene == "all" && s.name != "paper-hard")) chosen.push_back(&s);
   }
-  if (chosen.empty()) usage_error("--scene: no scene '" + opt.scene + "' (try --list)");
+  if (chosen.empty() && opt.scene != "many-bodies")
+    usage_error("--scene: no scene '" + opt.scene + "' (try --list)");
   std::filesystem::create_directories(opt.out);
 
   const auto model = load_model("bunny.obj");
@@ -969,6 +1066,7 @@ int run(int argc, char** argv) {
 #endif
   std::printf("%s Coal is not measured yet.\n", kPeerNote);
 
+  if (opt.scene == "many-bodies" || opt.scene == "all") run_many_bodies(*model, opt);
   for (const Scene* s : chosen) {
     const SceneRun r = run_scene(*s, *model, opt);
     write_file(opt.out + "/" + s->name + ".csv", csv(r));
