@@ -1,5 +1,7 @@
 #include "io/obj.h"
 
+#include "io/file.h"
+
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -148,19 +150,10 @@ class Parser {
 
 Status read_obj(const std::string& path, ObjData& out) {
   out = {};
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (file == nullptr)
-    return {StatusCode::IoError, "cannot open '" + path + "': " + std::generic_category().message(errno)};
-  std::string text;
-  char buffer[1 << 16];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, file)) > 0;) text.append(buffer, n);
-  const bool failed = std::ferror(file) != 0;
-  const int error = errno;
-  std::fclose(file);
-  if (failed)
-    return {StatusCode::IoError, "cannot read '" + path + "': " +
-                                     (error != 0 ? std::generic_category().message(error) : "read error")};
-  return parse_obj(text, path, out);
+  std::vector<unsigned char> bytes;
+  const Status status = read_file(path, bytes);
+  if (!status) return status;
+  return parse_obj(std::string(bytes.begin(), bytes.end()), path, out);
 }
 
 Status parse_obj(const std::string& text, const std::string& name, ObjData& out) {
