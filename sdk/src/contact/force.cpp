@@ -37,16 +37,14 @@ double force_magnitude(const ForceSettings& s, double distance) {
   return s.max_force * std::max(0.0, (e - tail) / (1.0 - tail));
 }
 
-Wrench tool_wrench(const ForceSettings& s, const std::vector<LmdPair>& lmds, const Vec3& reference_point) {
-  Wrench w;
-  for (const LmdPair& p : lmds) {
-    const Vec3 d = p.point_b - p.point_a;
-    const double len = glm::length(d);
-    if (!(len > 0.0)) continue;  // touching: no direction (intersections are not LMDs)
-    const Vec3 f = (force_magnitude(s, p.distance) / len) * d;
-    w.force += f;
-    w.torque += glm::cross(p.point_b - reference_point, f);
-  }
+void WrenchSum::add(const ForceSettings& s, const Vec3& point_b, const Vec3& direction, double distance) {
+  const Vec3 f = force_magnitude(s, distance) * direction;
+  force_ += f;
+  torque_ += glm::cross(point_b - reference_point_, f);
+}
+
+Wrench WrenchSum::finish(const ForceSettings& s) const {
+  Wrench w{force_, torque_, false};
   // Clipping the force scales the torque alike, keeping the wrench's line of
   // action; the torque then has its own limit.
   const double f = glm::length(w.force);
@@ -57,6 +55,17 @@ Wrench tool_wrench(const ForceSettings& s, const std::vector<LmdPair>& lmds, con
   const double t = glm::length(w.torque);
   if (t > s.max_torque) w.torque *= s.max_torque / t, w.clipped = true;
   return w;
+}
+
+Wrench tool_wrench(const ForceSettings& s, const std::vector<LmdPair>& lmds, const Vec3& reference_point) {
+  WrenchSum sum(reference_point);
+  for (const LmdPair& p : lmds) {
+    const Vec3 d = p.point_b - p.point_a;
+    const double len = glm::length(d);
+    if (!(len > 0.0)) continue;  // touching: no direction (intersections are not LMDs)
+    sum.add(s, p.point_b, d / len, p.distance);
+  }
+  return sum.finish(s);
 }
 
 }  // namespace prox

@@ -39,6 +39,22 @@ struct Wrench {
   bool clipped = false;
 };
 
+// Sums per-contact forces and their torques, then clips: what tool_wrench
+// and the haptic loop share. Allocates nothing.
+class WrenchSum {
+ public:
+  explicit WrenchSum(const Vec3& reference_point) : reference_point_(reference_point) {}
+  // One contact: its point on the tool, the unit direction the force pushes
+  // the tool in, and the distance the force magnitude is taken at.
+  void add(const ForceSettings& settings, const Vec3& point_b, const Vec3& direction, double distance);
+  // The sum, clipped as tool_wrench describes.
+  Wrench finish(const ForceSettings& settings) const;
+
+ private:
+  Vec3 reference_point_;
+  Vec3 force_{0.0}, torque_{0.0};
+};
+
 // The force and torque on mesh B (the held tool) from its LMD pairs with A:
 // each pair pushes B away from A along point_b - point_a; the forces are
 // summed and the sum clipped to max_force (which keeps many parallel LMDs

@@ -1,0 +1,49 @@
+#include "io/poses.h"
+
+#include "io/file.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace prox::io {
+
+Status parse_poses(const std::string& text, const std::string& name, std::vector<PoseRecord>& out) {
+  out.clear();
+  std::istringstream lines(text);
+  std::string line;
+  int number = 0;
+  while (std::getline(lines, line)) {
+    ++number;
+    const auto first = line.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos || line[first] == '#') continue;
+    const std::string where = name + ":" + std::to_string(number);
+    double v[7];
+    int read = 0;
+    const char* at = line.c_str();
+    for (; read < 7; ++read) {
+      char* end = nullptr;
+      v[read] = std::strtod(at, &end);
+      if (end == at) break;
+      at = end;
+    }
+    if (read != 7 || std::string(at).find_first_not_of(" \t\r\n") != std::string::npos)
+      return Status(StatusCode::ParseError, where + ": expected 7 numbers: tx ty tz qw qx qy qz");
+    for (double x : v)
+      if (!std::isfinite(x)) return Status(StatusCode::ParseError, where + ": a number is not finite");
+    const double n = std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5] + v[6] * v[6]);
+    if (!(n > 1e-12)) return Status(StatusCode::ParseError, where + ": the quaternion is zero");
+    out.push_back({{v[0], v[1], v[2]}, {v[3] / n, v[4] / n, v[5] / n, v[6] / n}});
+  }
+  if (out.empty()) return Status(StatusCode::ParseError, name + ": no pose in the file");
+  return Status();
+}
+
+Status read_poses(const std::string& path, std::vector<PoseRecord>& out) {
+  std::vector<unsigned char> bytes;
+  const Status s = read_file(path, bytes);
+  if (!s) return s;
+  return parse_poses(std::string(bytes.begin(), bytes.end()), path, out);
+}
+
+}  // namespace prox::io

@@ -1,0 +1,82 @@
+// What the 1 kHz haptic loop computes each tick (docs/threading.md): the
+// tracked contacts re-evaluated at the device's current pose, then made safe
+// for a device. Nothing here locks or allocates.
+#pragma once
+
+#include "contact/force.h"
+#include "contact/pose.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace prox::runtime {
+
+// One tracked contact as the haptic loop uses it: the tool's closest point in
+// the tool's own frame (it moves with the hand), the other body's closest
+// point and the contact normal in the world (the other body does not move at
+// haptic time scales).
+struct HapticContact {
+  Vec3 tool_point_local{0.0};
+  Vec3 other_point{0.0};
+  Vec3 normal{0.0, 0.0, 1.0};  // unit, from the other body to the tool
+  double distance = 0.0;       // when tracked
+};
+
+// A tool's contacts as the local tracking thread last saw them. Its storage
+// is reserved once, before the threads start; the writer fills at most
+// capacity() contacts (the closest ones) and never reallocates.
+struct ContactSnapshot {
+  std::vector<HapticContact> contacts;  // reserved; size() is the count
+  Pose tool_pose;                       // the tool's pose the contacts were tracked at
+  double time = 0.0;                    // steady-clock seconds when tracked
+  std::uint64_t sequence = 0;           // 0: nothing published yet
+  std::uint32_t dropped = 0;            // contacts beyond the capacity
+  std::uint64_t checksum = 0;           // snapshot_checksum(), set last by the writer
+};
+
+// A cheap fingerprint of a snapshot's contents, so the haptic loop can check
+// that it never reads one half written (a bug the handoff rules out; the
+// check keeps it ruled out).
+std::uint64_t snapshot_checksum(const ContactSnapshot& snapshot);
+
+// The force and torque the snapshot's contacts give at the tool pose `pose`:
+// each contact's separation is re-measured along its normal (first order in
+// the motion since tracking), so the force follows the hand between local
+// updates; at the snapshot's own pose it is exactly tool_wrench's.
+Wrench evaluate_contacts(const ForceSettings& settings, const ContactSnapshot& snapshot, const Pose& pose,
+                         const Vec3& reference_point_local);
+
+// How far the contacts may be trusted from the pose they were tracked at:
+// the largest distance any point of the tool within `radius` of its
+// reference point has moved (translation plus rotation times radius).
+double pose_displacement(const Pose& from, const Pose& to, const Vec3& reference_point_local, double radius);
+
+// The last gate before a device: whatever comes in (NaN, a spike, nothing),
+// what goes out is finite, within the maxima, and changes by at most the
+// configured rates, so a stale or invalid input fades to zero smoothly.
+struct SafetySettings {
+  double max_force = 3.0;       // N
+  double max_torque = 0.3;      // N m
+  double max_force_rate = 300;  // N/s
+  double max_torque_rate = 30;  // N m/s
+};
+
+class SafetyFilter {
+ public:
+  explicit SafetyFilter(const SafetySettings& settings = {}) : settings_(settings) {}
+  // The wrench to hand to the device after `dt` seconds, moving towards
+  // `target` (a zero wrench when !valid or when the target is not finite).
+  // Sets *limited when the output is not the target.
+  Wrench step(const Wrench& target, bool valid, double dt, bool* limited = nullptr);
+  const Wrench& output() const { return output_; }
+  void reset() { output_ = Wrench{}; }
+
+ private:
+  // The longest time step honoured (s): a longer gap between ticks (the
+  // haptic thread itself was held up) must not license a jump.
+  static constexpr double kMaxStep = 0.005;
+  SafetySettings settings_;
+  Wrench output_;
+};
+
+}  // namespace prox::runtime
