@@ -939,7 +939,8 @@ void run_many_bodies(const Model& model, const Options& opt) {
   for (std::uint32_t t = 0; t < model.mesh.triangle_count(); ++t)
     indices.insert(indices.end(), model.mesh.indices(t).begin(), model.mesh.indices(t).end());
   auto world_with = [&](int far_bodies) {
-    runtime::World w{runtime::WorldSettings{}};
+    auto world = std::make_unique<runtime::World>(runtime::WorldSettings{});
+    runtime::World& w = *world;
     Status status;
     const MeshInput input{positions.data(), static_cast<std::uint32_t>(positions.size() / 3), indices.data(),
                           static_cast<std::uint32_t>(indices.size() / 3)};
@@ -951,10 +952,12 @@ void run_many_bodies(const Model& model, const Options& opt) {
                     Pose{glm::dmat3(1.0), Vec3(0.5 * (i % 12) - 2.75, 0.6 + 0.5 * (i / 12), 0.0)}, Vec3(0.0));
     const runtime::Handle tool =
         w.create_body(mesh, runtime::BodyType::Tool, path.front().pose, model.centroid);
-    return std::make_pair(std::move(w), tool);
+    return std::make_pair(std::move(world), tool);
   };
-  auto [alone, tool_alone] = world_with(0);
-  auto [crowd, tool_crowd] = world_with(kFarBodies);
+  auto [alone_world, tool_alone] = world_with(0);
+  auto [crowd_world, tool_crowd] = world_with(kFarBodies);
+  runtime::World& alone = *alone_world;
+  runtime::World& crowd = *crowd_world;
   std::vector<double> alone_ms, crowd_ms, alone_near, crowd_near, overhead_far;
   int max_in_range = 0, contacts_differ = 0;
   std::string rows = "step,x,alone_ms,crowd_ms,crowd_pairs_in_range,crowd_pairs_searched,contacts\n";

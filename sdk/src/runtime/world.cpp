@@ -1,5 +1,7 @@
 #include "runtime/world.h"
 
+#include "runtime/threads.h"
+
 #include <glm/geometric.hpp>
 
 #include <chrono>
@@ -25,6 +27,8 @@ bool overlap(const Aabb& a, const Aabb& b) {
 World::World(const WorldSettings& settings) : settings_(settings) {
   settings_.force.cutoff = settings_.cutoff;
 }
+
+World::~World() { stop_threads(); }
 
 Handle World::create_mesh(const MeshInput& input, Status& status) {
   auto data = std::make_unique<MeshData>();
@@ -68,6 +72,7 @@ Handle World::create_body(Handle mesh, BodyType type, const Pose& pose, const Ve
   b.pose_version += 1;
   b.contacts.clear();
   b.wrench = Wrench{};
+  b.device = Device{};
   meshes_[mesh.index].users += 1;
   return {i, b.generation};
 }
@@ -80,13 +85,73 @@ void World::destroy_body(Handle h) {
   BodySlot& b = bodies_[h.index];
   b.alive = false;
   b.contacts.clear();
+  b.device = Device{};
   meshes_[b.mesh].users -= 1;
 }
 
 void World::set_pose(Handle h, const Pose& pose) {
   BodySlot& b = bodies_[h.index];
+  if (running() && b.type == BodyType::Tool) {
+    threads_->set_tool_pose(h.index, pose);  // the haptic loop reads it from there
+    return;
+  }
+  std::unique_lock<std::mutex> lock(scene_mutex_, std::defer_lock);
+  if (running()) lock.lock();
   b.pose = pose;
   b.pose_version += 1;
+}
+
+void World::set_device(Handle tool, const Device& device) { bodies_[tool.index].device = device; }
+
+std::uint32_t World::add_scripted_device(std::unique_ptr<ScriptedDevice> device) {
+  scripted_devices_.push_back(std::move(device));
+  return static_cast<std::uint32_t>(scripted_devices_.size() - 1);
+}
+
+Pose World::current_pose(Handle h) const {
+  if (running() && bodies_[h.index].type == BodyType::Tool) return threads_->tool_pose(h.index);
+  return bodies_[h.index].pose;
+}
+
+void World::contacts(Handle tool, std::vector<Contact>& out) const {
+  if (running()) {
+    threads_->contacts(tool.index, out);
+    return;
+  }
+  out = bodies_[tool.index].contacts;
+}
+
+Wrench World::wrench(Handle tool) const {
+  return running() ? threads_->wrench(tool.index) : bodies_[tool.index].wrench;
+}
+
+StepStats World::stats() const { return running() ? threads_->step_stats() : stats_; }
+
+bool World::start_threads(const ThreadSettings& settings, Status& status) {
+  if (running()) return true;
+  auto threads = std::make_unique<Threads>(*this, settings);
+  if (!threads->start(status)) return false;
+  threads_ = std::move(threads);
+  return true;
+}
+
+bool World::running() const { return threads_ && threads_->running(); }
+
+void World::stop_threads() {
+  if (!running()) return;
+  threads_->stop();
+  // Hand the last results back to the bodies, so that the game thread reads
+  // the same contacts, wrench and pose after stopping as just before.
+  for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
+    BodySlot& b = bodies_[i];
+    if (!b.alive || b.type != BodyType::Tool) continue;
+    threads_->contacts(i, b.contacts);
+    b.wrench = threads_->wrench(i);
+    b.pose = threads_->tool_pose(i);
+    b.pose_version += 1;
+  }
+  stats_ = threads_->step_stats();
+  // The stopped threads' statistics stay readable until the next start.
 }
 
 int World::body_count() const {
@@ -101,85 +166,114 @@ int World::tool_count() const {
   return n;
 }
 
-Aabb World::world_box(const BodySlot& b, double margin) const {
-  const Aabb& local = meshes_[b.mesh].data->mesh.bounds();
+Aabb World::world_box(const Aabb& local, const Pose& pose, double margin) const {
   // The box of the rotated box: centre moved, half-extents through |R|.
-  const Vec3 centre = b.pose.apply(0.5 * (local.min + local.max));
+  const Vec3 centre = pose.apply(0.5 * (local.min + local.max));
   const Vec3 half = 0.5 * (local.max - local.min);
   Vec3 extent(0.0);
   for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) extent[r] += std::abs(b.pose.rotation[c][r]) * half[c];
+    for (int c = 0; c < 3; ++c) extent[r] += std::abs(pose.rotation[c][r]) * half[c];
   return {centre - extent - Vec3(margin), centre + extent + Vec3(margin)};
+}
+
+std::vector<BodyPose> World::body_poses() const {
+  std::vector<BodyPose> poses(bodies_.size());
+  for (std::size_t i = 0; i < bodies_.size(); ++i) poses[i] = {bodies_[i].pose, bodies_[i].pose_version};
+  return poses;
+}
+
+void World::search_tool(std::uint32_t t, const std::vector<BodyPose>& poses, PairMap& pairs,
+                        std::vector<PairInRange>& in_range, StepStats& stats) const {
+  in_range.clear();
+  const BodySlot& tool = bodies_[t];
+  const MeshData& tool_mesh = *meshes_[tool.mesh].data;
+  const Pose& tool_pose = poses[t].pose;
+  const Aabb tool_box = world_box(tool_mesh.mesh.bounds(), tool_pose, settings_.cutoff);
+  for (std::uint32_t o = 0; o < bodies_.size(); ++o) {
+    const BodySlot& other = bodies_[o];
+    if (o == t || !other.alive) continue;
+    const MeshData& other_mesh = *meshes_[other.mesh].data;
+    // Broadphase: only pairs whose boxes (grown by the cutoff) overlap cost
+    // any narrow work.
+    if (!overlap(tool_box, world_box(other_mesh.mesh.bounds(), poses[o].pose, 0.0))) continue;
+    ++stats.pairs_in_range;
+    PairSlot& pair = pairs[pair_key(t, o)];
+    if (pair.tool_generation != tool.generation || pair.body_generation != other.generation) {
+      pair = PairSlot{};  // the slots were reused by new bodies
+      pair.tool_generation = tool.generation;
+      pair.body_generation = other.generation;
+    }
+    pair.seen = true;
+    // An unchanged pose pair has the same answer: skip the search.
+    if (pair.tool_version != poses[t].version || pair.body_version != poses[o].version) {
+      const PairQuery q{&other_mesh.mesh, other_mesh.snch.get(), poses[o].pose,
+                        &tool_mesh.mesh,  tool_mesh.snch.get(),  tool_pose,
+                        settings_.cutoff};
+      ProximityResult r;
+      find_lmds(q, settings_.method, pair.state, r);
+      pair.lmds = std::move(r.lmds);
+      pair.tool_version = poses[t].version;
+      pair.body_version = poses[o].version;
+      ++stats.pairs_searched;
+      stats.candidates += r.candidates;
+    }
+    in_range.push_back({o, &pair});
+  }
+}
+
+void World::prune(PairMap& pairs) {
+  // Pairs out of range lose their state (and their memory).
+  for (auto it = pairs.begin(); it != pairs.end();) {
+    if (!it->second.seen) {
+      it = pairs.erase(it);
+    } else {
+      it->second.seen = false;
+      ++it;
+    }
+  }
 }
 
 void World::step() {
   const auto start = std::chrono::steady_clock::now();
   stats_ = StepStats{};
-  for (auto& [key, pair] : pairs_) pair.seen = false;
+  const std::vector<BodyPose> poses = body_poses();
+  std::vector<PairInRange> in_range;
+  std::vector<LmdPair> all;
   for (std::uint32_t t = 0; t < bodies_.size(); ++t) {
     BodySlot& tool = bodies_[t];
     if (!tool.alive || tool.type != BodyType::Tool) continue;
+    search_tool(t, poses, pairs_, in_range, stats_);
     tool.contacts.clear();
-    const Aabb tool_box = world_box(tool, settings_.cutoff);
-    const MeshData& tool_mesh = *meshes_[tool.mesh].data;
-    std::vector<LmdPair> all;
-    for (std::uint32_t o = 0; o < bodies_.size(); ++o) {
-      const BodySlot& other = bodies_[o];
-      if (o == t || !other.alive) continue;
-      // Broadphase: only pairs whose boxes (grown by the cutoff) overlap
-      // cost any narrow work.
-      if (!overlap(tool_box, world_box(other, 0.0))) continue;
-      ++stats_.pairs_in_range;
-      PairSlot& pair = pairs_[pair_key(t, o)];
-      pair.seen = true;
-      if (pair.tool_generation != tool.generation || pair.body_generation != other.generation) {
-        pair = PairSlot{};  // the slots were reused by new bodies
-        pair.seen = true;
-        pair.tool_generation = tool.generation;
-        pair.body_generation = other.generation;
+    all.clear();
+    for (const PairInRange& p : in_range)
+      for (const LmdPair& lmd : p.slot->lmds) {
+        tool.contacts.push_back({p.other, lmd});
+        all.push_back(lmd);
       }
-      // An unchanged pose pair has the same answer: skip the search.
-      if (pair.tool_version != tool.pose_version || pair.body_version != other.pose_version) {
-        const MeshData& other_mesh = *meshes_[other.mesh].data;
-        const PairQuery q{&other_mesh.mesh, other_mesh.snch.get(), other.pose,
-                          &tool_mesh.mesh,  tool_mesh.snch.get(),  tool.pose,
-                          settings_.cutoff};
-        ProximityResult r;
-        find_lmds(q, settings_.method, pair.state, r);
-        pair.lmds = std::move(r.lmds);
-        pair.tool_version = tool.pose_version;
-        pair.body_version = other.pose_version;
-        ++stats_.pairs_searched;
-        stats_.candidates += r.candidates;
-      }
-      for (const LmdPair& p : pair.lmds) {
-        tool.contacts.push_back({o, p});
-        all.push_back(p);
-      }
-    }
     tool.wrench = tool_wrench(settings_.force, all, tool.pose.apply(tool.reference_point));
     stats_.contacts += static_cast<int>(tool.contacts.size());
   }
-  // Pairs out of range lose their state (and their memory).
-  for (auto it = pairs_.begin(); it != pairs_.end();) it = it->second.seen ? std::next(it) : pairs_.erase(it);
+  prune(pairs_);
   stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void World::intersections(Handle tool_handle, std::vector<std::pair<std::uint32_t, Polyline>>& out) const {
   out.clear();
   const BodySlot& tool = bodies_[tool_handle.index];
-  const Aabb tool_box = world_box(tool, 0.0);
+  const Pose tool_pose = current_pose(tool_handle);
   const MeshData& tool_mesh = *meshes_[tool.mesh].data;
+  const Aabb tool_box = world_box(tool_mesh.mesh.bounds(), tool_pose, 0.0);
   for (std::uint32_t o = 0; o < bodies_.size(); ++o) {
     const BodySlot& other = bodies_[o];
-    if (o == tool_handle.index || !other.alive || !overlap(tool_box, world_box(other, 0.0))) continue;
+    if (o == tool_handle.index || !other.alive) continue;
     const MeshData& other_mesh = *meshes_[other.mesh].data;
+    if (!overlap(tool_box, world_box(other_mesh.mesh.bounds(), other.pose, 0.0))) continue;
     const PairQuery q{&other_mesh.mesh,
                       other_mesh.snch.get(),
                       other.pose,
                       &tool_mesh.mesh,
                       tool_mesh.snch.get(),
-                      tool.pose,
+                      tool_pose,
                       0.0};
     std::vector<Polyline> lines;
     PolylineStats stats;

@@ -5,13 +5,19 @@
 #include "contact/force.h"
 #include "contact/polylines.h"
 #include "contact/proximity.h"
+#include "runtime/device.h"
+#include "runtime/scripted_device.h"
 
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <unordered_map>
 #include <vector>
 
 namespace prox::runtime {
+
+class Threads;
+struct ThreadSettings;
 
 enum class BodyType { Static, Movable, Tool };
 
@@ -40,6 +46,29 @@ struct StepStats {
   double seconds = 0.0;
 };
 
+// A body's pose as a search sees it, with a version that changes whenever
+// the pose does (equal versions: the same pose, the same answer).
+struct BodyPose {
+  Pose pose;
+  std::uint64_t version = 0;
+};
+
+// What a tool-body pair keeps between searches.
+struct PairSlot {
+  PairState state;
+  std::vector<LmdPair> lmds;
+  std::uint64_t tool_version = ~0ull, body_version = ~0ull;
+  std::uint32_t tool_generation = 0, body_generation = 0;
+  bool seen = false;  // in range in the current search
+};
+using PairMap = std::unordered_map<std::uint64_t, PairSlot>;
+
+// A pair the broadphase kept in a search, and its state after it.
+struct PairInRange {
+  std::uint32_t other = 0;
+  const PairSlot* slot = nullptr;
+};
+
 class World {
  public:
   explicit World(const WorldSettings& settings);
@@ -60,18 +89,59 @@ class World {
   BodyType type(Handle h) const { return bodies_[h.index].type; }
   std::uint32_t body_generation(std::uint32_t index) const { return bodies_[index].generation; }
 
-  // The deterministic step: every tool against the bodies in range.
+  // The deterministic step: every tool against the bodies in range, on the
+  // calling thread. Not while the threads run.
   void step();
-  const std::vector<Contact>& contacts(Handle tool) const { return bodies_[tool.index].contacts; }
-  const Wrench& wrench(Handle tool) const { return bodies_[tool.index].wrench; }
-  const StepStats& stats() const { return stats_; }
+  // The latest results: of the last step, or of the threads while they run
+  // (contacts from local tracking, the wrench the haptic loop last handed
+  // to the device, the pose it last read). Game thread.
+  void contacts(Handle tool, std::vector<Contact>& out) const;
+  Wrench wrench(Handle tool) const;
+  Pose current_pose(Handle body) const;
+  StepStats stats() const;
   // The intersection polylines of a tool with every body whose box meets
   // its box, at the current poses; computed on each call.
   void intersections(Handle tool, std::vector<std::pair<std::uint32_t, Polyline>>& out) const;
   int body_count() const;
   int tool_count() const;
 
+  // A device holds the tool while the threads run (nullptr callbacks: none;
+  // the game thread's set_pose moves it then). Not while the threads run.
+  void set_device(Handle tool, const Device& device);
+  const Device& device(Handle tool) const { return bodies_[tool.index].device; }
+  // Scripted devices the world owns (they live as long as it does).
+  std::uint32_t add_scripted_device(std::unique_ptr<ScriptedDevice> device);
+  ScriptedDevice* scripted_device(std::uint32_t index) const {
+    return index < scripted_devices_.size() ? scripted_devices_[index].get() : nullptr;
+  }
+
+  // The threads (docs/threading.md). start_threads fails (false, with
+  // `status`) on bad settings; while they run, meshes and bodies can be
+  // neither created nor destroyed, and step() is refused.
+  bool start_threads(const ThreadSettings& settings, Status& status);
+  void stop_threads();
+  bool running() const;
+  // The running threads, or the last ones stopped (their statistics stay
+  // readable); nullptr before the first start.
+  Threads* threads() { return threads_.get(); }
+  const Threads* threads() const { return threads_.get(); }
+  const WorldSettings& settings() const { return settings_; }
+
+  // One tool's search against the bodies in range at the given poses (one
+  // per body slot), keeping per-pair state in `pairs`; `in_range` lists the
+  // pairs kept. What step() and the global search thread both run. Reads
+  // only the meshes and bodies' static data: safe beside the game thread
+  // while the threads run (which freeze both).
+  void search_tool(std::uint32_t tool, const std::vector<BodyPose>& poses, PairMap& pairs,
+                   std::vector<PairInRange>& in_range, StepStats& stats) const;
+  // Drops the pairs no search has seen since the last call.
+  static void prune(PairMap& pairs);
+
+  ~World();
+
  private:
+  friend class Threads;
+
   struct MeshData {
     Mesh mesh;
     std::unique_ptr<Snch> snch;
@@ -92,23 +162,22 @@ class World {
     std::uint64_t pose_version = 0;  // bumped by every set_pose
     std::vector<Contact> contacts;   // tools: after the last step
     Wrench wrench;                   // tools: after the last step
-  };
-  // What a tool-body pair keeps between steps.
-  struct PairSlot {
-    PairState state;
-    std::vector<LmdPair> lmds;
-    std::uint64_t tool_version = ~0ull, body_version = ~0ull;
-    std::uint32_t tool_generation = 0, body_generation = 0;
-    bool seen = false;  // in range in the current step
+    Device device;                   // tools: what holds it while the threads run
   };
 
-  Aabb world_box(const BodySlot& b, double margin) const;
+  Aabb world_box(const Aabb& local, const Pose& pose, double margin) const;
+  std::vector<BodyPose> body_poses() const;
 
   WorldSettings settings_;
   std::vector<MeshSlot> meshes_;
   std::vector<BodySlot> bodies_;
-  std::unordered_map<std::uint64_t, PairSlot> pairs_;
+  PairMap pairs_;
   StepStats stats_;
+  // While the threads run, the game thread's set_pose and the global
+  // search's reading of the poses meet here (never on the haptic path).
+  mutable std::mutex scene_mutex_;
+  std::vector<std::unique_ptr<ScriptedDevice>> scripted_devices_;
+  std::unique_ptr<Threads> threads_;
 };
 
 }  // namespace prox::runtime

@@ -1,0 +1,433 @@
+#include "runtime/threads.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#if defined(__linux__)
+#include <pthread.h>
+#include <sched.h>
+#endif
+
+namespace prox::runtime {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+bool finite(double v) { return std::isfinite(v); }
+
+// A device's pose as a Pose, or false when it is not one (non-finite, or a
+// quaternion too far from unit length to be a rotation).
+bool pose_from_device(const DevicePose& d, Pose& pose) {
+  for (double v : d.position)
+    if (!finite(v)) return false;
+  double norm2 = 0.0;
+  for (double v : d.rotation) {
+    if (!finite(v)) return false;
+    norm2 += v * v;
+  }
+  if (!(norm2 > 0.25 && norm2 < 4.0)) return false;
+  const double k = 1.0 / std::sqrt(norm2);
+  const glm::dquat q(d.rotation[0] * k, d.rotation[1] * k, d.rotation[2] * k, d.rotation[3] * k);
+  pose.rotation = glm::mat3_cast(q);
+  pose.translation = Vec3(d.position[0], d.position[1], d.position[2]);
+  return true;
+}
+
+void count(std::atomic<std::uint64_t>& counter, std::uint64_t n = 1) {
+  counter.fetch_add(n, std::memory_order_relaxed);
+}
+
+}  // namespace
+
+Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), settings_(settings) {
+  epoch_ = Clock::now();
+  tool_of_body_.assign(world.bodies_.size(), -1);
+  for (std::uint32_t i = 0; i < world.bodies_.size(); ++i) {
+    const World::BodySlot& b = world.bodies_[i];
+    if (!b.alive || b.type != BodyType::Tool) continue;
+    auto tool = std::make_unique<Tool>();
+    tool->body = i;
+    tool->device = b.device;
+    tool->reference_local = b.reference_point;
+    const Aabb& box = world.meshes_[b.mesh].data->mesh.bounds();
+    for (int corner = 0; corner < 8; ++corner) {
+      const Vec3 p((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                   (corner & 4) ? box.max.z : box.min.z);
+      tool->radius = std::max(tool->radius, glm::length(p - b.reference_point));
+    }
+    const PoseSample start{b.pose, 0.0, 1};
+    tool->pose.store(start);
+    tool->game_pose.store(start);
+    tool->wrench.store({b.wrench});
+    tool->contacts = b.contacts;
+    // The haptic loop's snapshots never grow once the threads run.
+    for (int k = 0; k < 3; ++k)
+      tool->snapshots.buffer(k).contacts.reserve(
+          static_cast<std::size_t>(std::max(1, settings_.max_contacts)));
+    tool->filter = SafetyFilter({world.settings_.force.max_force, world.settings_.force.max_torque,
+                                 settings_.max_force_rate, settings_.max_torque_rate});
+    tool_of_body_[i] = static_cast<int>(tools_.size());
+    tools_.push_back(std::move(tool));
+  }
+  for (auto& p : pinned_) p.store(-1);
+}
+
+Threads::~Threads() { stop(); }
+
+bool Threads::start(Status& status) {
+  const ThreadSettings& s = settings_;
+  auto bad = [&status](const std::string& message) {
+    status = Status(StatusCode::InvalidArgument, message);
+    return false;
+  };
+  if (!(finite(s.haptic_rate) && s.haptic_rate > 0.0 && s.haptic_rate <= 100000.0))
+    return bad("haptic rate must be in (0, 100000] Hz (it is " + std::to_string(s.haptic_rate) + ")");
+  if (!(finite(s.local_rate) && s.local_rate >= 0.0))
+    return bad("local rate must be >= 0 Hz (it is " + std::to_string(s.local_rate) + ")");
+  if (!(finite(s.global_rate) && s.global_rate >= 0.0))
+    return bad("global rate must be >= 0 Hz (it is " + std::to_string(s.global_rate) + ")");
+  if (!(finite(s.stale_after) && s.stale_after > 0.0))
+    return bad("staleness limit must be > 0 s (it is " + std::to_string(s.stale_after) + ")");
+  if (!(finite(s.max_force_rate) && s.max_force_rate > 0.0))
+    return bad("maximum force rate must be > 0 N/s (it is " + std::to_string(s.max_force_rate) + ")");
+  if (!(finite(s.max_torque_rate) && s.max_torque_rate > 0.0))
+    return bad("maximum torque rate must be > 0 N m/s (it is " + std::to_string(s.max_torque_rate) + ")");
+  if (!(finite(s.trust_distance) && s.trust_distance >= 0.0))
+    return bad("trust distance must be >= 0 (it is " + std::to_string(s.trust_distance) + ")");
+  if (s.max_contacts < 1 || s.max_contacts > (1 << 20))
+    return bad("maximum contacts per tool must be in [1, 1048576] (it is " + std::to_string(s.max_contacts) +
+               ")");
+  if (s.trust_distance == 0.0) settings_.trust_distance = world_.settings_.cutoff;
+  const int cores = static_cast<int>(std::thread::hardware_concurrency());
+  const char* names[3] = {"haptic", "local", "global"};
+  for (int r = 0; r < 3; ++r)
+    if (s.cores[r] < -1 || (cores > 0 && s.cores[r] >= cores))
+      return bad(std::string(names[r]) + " thread's core " + std::to_string(s.cores[r]) +
+                 " is not -1 or in [0, " + std::to_string(cores) + ")");
+  loop_stats_[int(Role::Haptic)].reset(s.haptic_rate);
+  loop_stats_[int(Role::Local)].reset(s.local_rate);
+  loop_stats_[int(Role::Global)].reset(s.global_rate);
+  stop_.store(false);
+  threads_[int(Role::Global)] = std::thread([this] { global_main(); });
+  threads_[int(Role::Local)] = std::thread([this] { local_main(); });
+  threads_[int(Role::Haptic)] = std::thread([this] { haptic_main(); });
+  started_ = true;
+  return true;
+}
+
+void Threads::stop() {
+  if (!started_) return;
+  for (auto& s : stalled_) s.store(false);
+  stop_.store(true);
+  for (std::thread& t : threads_)
+    if (t.joinable()) t.join();
+  started_ = false;
+}
+
+double Threads::now() const { return std::chrono::duration<double>(Clock::now() - epoch_).count(); }
+
+void Threads::pin(Role role) {
+  const int core = settings_.cores[int(role)];
+  if (core < 0) return;
+#if defined(__linux__)
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  CPU_SET(core, &set);
+  if (pthread_setaffinity_np(pthread_self(), sizeof set, &set) == 0) pinned_[int(role)].store(core);
+#endif
+}
+
+bool Threads::wait_while_stalled(Role role) {
+  if (!stalled_[int(role)].load(std::memory_order_relaxed)) return false;
+  while (stalled_[int(role)].load(std::memory_order_relaxed) && !stop_.load(std::memory_order_relaxed))
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  return true;
+}
+
+void Threads::pace(Role role, double period, double start, double& previous_start, double& deadline) {
+  const double end = now();
+  bool overrun = false;
+  if (period > 0.0) {
+    deadline += period;
+    // Missed the next tick: start it now rather than trying to catch up.
+    if (end > deadline) overrun = true, deadline = end;
+  }
+  loop_stats_[int(role)].record(previous_start < 0.0 ? 0.0 : start - previous_start, end - start, overrun);
+  previous_start = start;
+  if (period > 0.0)
+    std::this_thread::sleep_until(
+        epoch_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(deadline)));
+}
+
+// ---- haptic -----------------------------------------------------------------
+
+void Threads::haptic_main() {
+  pin(Role::Haptic);
+  const double period = 1.0 / settings_.haptic_rate;
+  double deadline = now(), previous = -1.0, last_tick = now();
+  while (!stop_.load(std::memory_order_relaxed)) {
+    if (wait_while_stalled(Role::Haptic)) {
+      deadline = last_tick = now();
+      previous = -1.0;
+      continue;
+    }
+    const double start = now();
+    const double dt = start - last_tick;
+    last_tick = start;
+    for (auto& tool : tools_) haptic_tick(*tool, start, dt);
+    pace(Role::Haptic, period, start, previous, deadline);
+  }
+  // Stopping must not drop the force at once: fade every device out at the
+  // gate's rates first (a few milliseconds at the defaults).
+  for (int tick = 0; tick < 10000; ++tick) {
+    bool zero = true;
+    for (auto& tool : tools_) {
+      const Wrench w = tool->filter.step(Wrench{}, false, period);
+      if (tool->device.write_wrench) {
+        const DeviceWrench out{{w.force.x, w.force.y, w.force.z}, {w.torque.x, w.torque.y, w.torque.z}, true};
+        tool->device.write_wrench(tool->device.user, &out);
+      }
+      tool->wrench.store({w});
+      zero = zero && glm::length(w.force) == 0.0 && glm::length(w.torque) == 0.0;
+    }
+    if (zero) break;
+    std::this_thread::sleep_for(std::chrono::duration<double>(period));
+  }
+}
+
+void Threads::haptic_tick(Tool& tool, double t, double dt) {
+  PoseSample sample;
+  bool ok = false;
+  if (tool.device.attached()) {
+    DevicePose d{};
+    ok = tool.device.read_pose(tool.device.user, &d) && pose_from_device(d, sample.pose);
+  } else {
+    sample = tool.game_pose.load();
+    ok = sample.valid != 0;
+  }
+  if (ok) {
+    sample.time = t;
+    sample.valid = 1;
+    tool.pose.store(sample);
+  } else {
+    count(invalid_poses_);
+  }
+
+  tool.snapshots.update();
+  const ContactSnapshot& snapshot = tool.snapshots.front();
+  bool valid = ok && snapshot.sequence > 0;
+  if (valid && snapshot_checksum(snapshot) != snapshot.checksum) count(torn_snapshots_), valid = false;
+  if (valid && t - snapshot.time > settings_.stale_after) count(stale_ticks_), valid = false;
+  if (valid && pose_displacement(snapshot.tool_pose, sample.pose, tool.reference_local, tool.radius) >
+                   settings_.trust_distance)
+    count(untrusted_ticks_), valid = false;
+  const Wrench target =
+      valid ? evaluate_contacts(world_.settings_.force, snapshot, sample.pose, tool.reference_local)
+            : Wrench{};
+  bool limited = false;
+  const Wrench w = tool.filter.step(target, valid, dt, &limited);
+  if (limited) count(limited_ticks_);
+  if (tool.device.write_wrench) {
+    const DeviceWrench out{{w.force.x, w.force.y, w.force.z}, {w.torque.x, w.torque.y, w.torque.z}, limited};
+    tool.device.write_wrench(tool.device.user, &out);
+  }
+  tool.wrench.store({w});
+}
+
+// ---- local tracking ----------------------------------------------------------------
+
+void Threads::local_main() {
+  pin(Role::Local);
+  const double period = settings_.local_rate > 0.0 ? 1.0 / settings_.local_rate : 0.0;
+  double deadline = now(), previous = -1.0;
+  std::vector<const LmdPair*> scratch;
+  while (!stop_.load(std::memory_order_relaxed)) {
+    if (wait_while_stalled(Role::Local)) {
+      deadline = now();
+      previous = -1.0;
+      continue;
+    }
+    const double start = now();
+    for (auto& tool : tools_) track(*tool, scratch);
+    pace(Role::Local, period, start, previous, deadline);
+  }
+}
+
+void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
+  const World::BodySlot& tool_body = world_.bodies_[tool.body];
+  const World::MeshData& tool_mesh = *world_.meshes_[tool_body.mesh].data;
+  const Method method = world_.settings_.method;
+
+  // A new global result replaces the set of pairs; each pair's tracked LMDs
+  // join the global ones (the tracker's cache drops the duplicates).
+  if (tool.global.update()) {
+    const GlobalResult& g = tool.global.front();
+    std::vector<LocalPair> next(g.pairs.size());
+    for (std::size_t i = 0; i < g.pairs.size(); ++i) {
+      const GlobalPair& gp = g.pairs[i];
+      LocalPair& lp = next[i];
+      lp.other = gp.other;
+      lp.other_pose = gp.other_pose;
+      lp.lmds = gp.lmds;
+      if (method == Method::Original) lp.tracker = LocalTracker::original();
+      for (LocalPair& old : tool.local_pairs)
+        if (old.other == gp.other) {
+          lp.tracker = std::move(old.tracker);
+          lp.lmds.insert(lp.lmds.end(), old.lmds.begin(), old.lmds.end());
+          break;
+        }
+    }
+    tool.local_pairs = std::move(next);
+  }
+
+  const PoseSample sample = tool.pose.load();
+  if (!sample.valid) return;
+  std::size_t total = 0;
+  for (LocalPair& lp : tool.local_pairs) {
+    const World::BodySlot& other = world_.bodies_[lp.other];
+    const World::MeshData& other_mesh = *world_.meshes_[other.mesh].data;
+    const PairQuery q{&other_mesh.mesh,     other_mesh.snch.get(), lp.other_pose,          &tool_mesh.mesh,
+                      tool_mesh.snch.get(), sample.pose,           world_.settings_.cutoff};
+    LocalTrackingStats stats;
+    lp.tracker.update(q, lp.lmds, stats);
+    total += lp.lmds.size();
+  }
+
+  // The snapshot for the haptic loop: the closest max_contacts contacts,
+  // the tool's points in its own frame.
+  scratch.clear();
+  for (const LocalPair& lp : tool.local_pairs)
+    for (const LmdPair& p : lp.lmds) scratch.push_back(&p);
+  ContactSnapshot& s = tool.snapshots.back();
+  const std::size_t capacity = s.contacts.capacity();
+  if (scratch.size() > capacity) {
+    std::nth_element(scratch.begin(), scratch.begin() + static_cast<std::ptrdiff_t>(capacity), scratch.end(),
+                     [](const LmdPair* a, const LmdPair* b) { return a->distance < b->distance; });
+    scratch.resize(capacity);
+  }
+  const Pose to_local = sample.pose.inverse();
+  s.contacts.clear();
+  for (const LmdPair* p : scratch) {
+    const Vec3 d = p->point_b - p->point_a;
+    const double len = glm::length(d);
+    if (!(len > 0.0)) continue;
+    s.contacts.push_back({to_local.apply(p->point_b), p->point_a, d / len, p->distance});
+  }
+  s.tool_pose = sample.pose;
+  s.time = sample.time;
+  s.sequence = ++tool.published;
+  s.dropped = static_cast<std::uint32_t>(total - scratch.size());
+  s.checksum = snapshot_checksum(s);
+  tool.snapshots.publish();
+  if (s.dropped) count(dropped_contacts_, s.dropped);
+
+  std::lock_guard<std::mutex> lock(results_mutex_);
+  tool.contacts.clear();
+  for (const LocalPair& lp : tool.local_pairs)
+    for (const LmdPair& p : lp.lmds) tool.contacts.push_back({lp.other, p});
+}
+
+// ---- global search -------------------------------------------------------------
+
+void Threads::global_main() {
+  pin(Role::Global);
+  const double period = settings_.global_rate > 0.0 ? 1.0 / settings_.global_rate : 0.0;
+  double deadline = now(), previous = -1.0;
+  PairMap pairs;
+  std::vector<PairInRange> in_range;
+  std::vector<BodyPose> poses;
+  std::vector<Pose> last_tool_pose(tools_.size());
+  std::vector<std::uint64_t> tool_version(tools_.size(), 0);
+  std::uint64_t sequence = 0;
+  while (!stop_.load(std::memory_order_relaxed)) {
+    if (wait_while_stalled(Role::Global)) {
+      deadline = now();
+      previous = -1.0;
+      continue;
+    }
+    const double start = now();
+    {
+      std::lock_guard<std::mutex> lock(world_.scene_mutex_);
+      poses.resize(world_.bodies_.size());
+      for (std::size_t i = 0; i < poses.size(); ++i)
+        poses[i] = {world_.bodies_[i].pose, world_.bodies_[i].pose_version};
+    }
+    // The tools' poses from the haptic loop; a version that moves only when
+    // the pose does, so a still tool costs no search.
+    for (std::size_t k = 0; k < tools_.size(); ++k) {
+      const PoseSample sample = tools_[k]->pose.load();
+      const bool moved = std::memcmp(&sample.pose, &last_tool_pose[k], sizeof(Pose)) != 0;
+      if (moved || tool_version[k] == 0) ++tool_version[k], last_tool_pose[k] = sample.pose;
+      poses[tools_[k]->body] = {last_tool_pose[k], tool_version[k]};
+    }
+    StepStats stats;
+    for (auto& tool : tools_) {
+      world_.search_tool(tool->body, poses, pairs, in_range, stats);
+      GlobalResult& r = tool->global.back();
+      r.pairs.resize(in_range.size());
+      for (std::size_t i = 0; i < in_range.size(); ++i) {
+        r.pairs[i].other = in_range[i].other;
+        r.pairs[i].other_pose = poses[in_range[i].other].pose;
+        r.pairs[i].lmds = in_range[i].slot->lmds;
+        stats.contacts += static_cast<int>(in_range[i].slot->lmds.size());
+      }
+      r.sequence = ++sequence;
+      tool->global.publish();
+    }
+    World::prune(pairs);
+    stats.seconds = now() - start;
+    {
+      std::lock_guard<std::mutex> lock(results_mutex_);
+      step_stats_ = stats;
+    }
+    pace(Role::Global, period, start, previous, deadline);
+    // Nothing moved: nothing new to find. Idle a millisecond rather than spin.
+    if (period == 0.0 && stats.pairs_searched == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
+// ---- the game thread's side --------------------------------------------------------
+
+void Threads::set_tool_pose(std::uint32_t body, const Pose& pose) {
+  const int k = tool_of_body_[body];
+  if (k >= 0) tools_[std::size_t(k)]->game_pose.store({pose, now(), 1});
+}
+
+Pose Threads::tool_pose(std::uint32_t body) const {
+  const int k = tool_of_body_[body];
+  return tools_[std::size_t(k)]->pose.load().pose;
+}
+
+Wrench Threads::wrench(std::uint32_t body) const {
+  const int k = tool_of_body_[body];
+  return tools_[std::size_t(k)]->wrench.load().wrench;
+}
+
+void Threads::contacts(std::uint32_t body, std::vector<Contact>& out) const {
+  const int k = tool_of_body_[body];
+  std::lock_guard<std::mutex> lock(results_mutex_);
+  out = tools_[std::size_t(k)]->contacts;
+}
+
+StepStats Threads::step_stats() const {
+  std::lock_guard<std::mutex> lock(results_mutex_);
+  return step_stats_;
+}
+
+HapticCounters Threads::haptic_counters() const {
+  HapticCounters c;
+  c.invalid_poses = invalid_poses_.load(std::memory_order_relaxed);
+  c.stale_ticks = stale_ticks_.load(std::memory_order_relaxed);
+  c.untrusted_ticks = untrusted_ticks_.load(std::memory_order_relaxed);
+  c.limited_ticks = limited_ticks_.load(std::memory_order_relaxed);
+  c.torn_snapshots = torn_snapshots_.load(std::memory_order_relaxed);
+  c.dropped_contacts = dropped_contacts_.load(std::memory_order_relaxed);
+  return c;
+}
+
+}  // namespace prox::runtime

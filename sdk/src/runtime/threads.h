@@ -1,0 +1,158 @@
+// The runtime's three threads beside the caller's (paper section 5,
+// docs/threading.md):
+//
+//   haptic  (1 kHz): reads each tool's pose from its device, re-evaluates the
+//            latest tracked contacts at that pose, passes the wrench through
+//            the safety gate and writes it to the device. No lock, no
+//            allocation, no wait.
+//   local   (1 kHz): tracks every tool's LMD pairs to the tool's latest pose
+//            and publishes them to the haptic loop; adopts the global
+//            search's results as they come.
+//   global  (back to back): broadphase, global search and its reduction for
+//            every tool against the bodies in range.
+//
+// Handoffs: tool poses go out of the haptic loop through seqlocks; global
+// results to the local thread and contact snapshots to the haptic loop
+// through triple buffers. The game thread's pose updates and its reading of
+// the results meet the other threads under mutexes, never the haptic loop.
+#pragma once
+
+#include "runtime/handoff.h"
+#include "runtime/haptic.h"
+#include "runtime/loop_stats.h"
+#include "runtime/world.h"
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace prox::runtime {
+
+enum class Role { Haptic = 0, Local = 1, Global = 2 };
+
+struct ThreadSettings {
+  double haptic_rate = 1000.0;  // Hz (> 0)
+  double local_rate = 1000.0;   // Hz; 0: back to back
+  double global_rate = 0.0;     // Hz; 0: back to back (it idles while nothing moves)
+  int cores[3] = {-1, -1, -1};  // per Role: the core to pin the thread to; -1: not pinned
+  double stale_after = 0.05;    // s: contacts older than this fade the force out
+  // The largest rates of change the safety gate lets through (N/s, N m/s).
+  double max_force_rate = 300.0;
+  double max_torque_rate = 30.0;
+  // Contacts tracked at a tool pose farther than this from the current one
+  // (any point of the tool within its bounds; 0: the world's cutoff) are not
+  // trusted: the force fades out until tracking catches up.
+  double trust_distance = 0.0;
+  int max_contacts = 1024;  // per tool handed to the haptic loop (the closest ones)
+};
+
+// Counters of the haptic loop's safety decisions, over all tools.
+struct HapticCounters {
+  std::uint64_t invalid_poses = 0;     // the device gave no pose, or a non-finite one
+  std::uint64_t stale_ticks = 0;       // contacts too old: faded out
+  std::uint64_t untrusted_ticks = 0;   // tool too far from where contacts were tracked
+  std::uint64_t limited_ticks = 0;     // the gate changed the wrench (clip or rate)
+  std::uint64_t torn_snapshots = 0;    // a snapshot failed its checksum (never expected)
+  std::uint64_t dropped_contacts = 0;  // beyond max_contacts, in the last snapshots
+};
+
+class Threads {
+ public:
+  Threads(World& world, const ThreadSettings& settings);
+  ~Threads();
+  Threads(const Threads&) = delete;
+  Threads& operator=(const Threads&) = delete;
+
+  // Validates the settings and starts the threads (false, with `status`).
+  bool start(Status& status);
+  // Fades every device's wrench out, then stops and joins the threads.
+  void stop();
+  bool running() const { return started_; }
+
+  // Game thread.
+  void set_tool_pose(std::uint32_t body, const Pose& pose);
+  Pose tool_pose(std::uint32_t body) const;
+  Wrench wrench(std::uint32_t body) const;
+  void contacts(std::uint32_t body, std::vector<Contact>& out) const;
+  StepStats step_stats() const;
+
+  // Any thread.
+  LoopSummary loop_summary(Role role) const { return loop_stats_[int(role)].summary(); }
+  HapticCounters haptic_counters() const;
+  int pinned_core(Role role) const { return pinned_[int(role)].load(std::memory_order_relaxed); }
+
+  // Fault injection, for tests: a stalled thread does nothing until released.
+  void stall(Role role, bool stalled) { stalled_[int(role)].store(stalled, std::memory_order_relaxed); }
+
+ private:
+  struct PoseSample {
+    Pose pose;
+    double time = 0.0;  // steady-clock seconds when read
+    std::uint32_t valid = 0;
+  };
+  struct WrenchSample {
+    Wrench wrench;
+  };
+  struct GlobalPair {
+    std::uint32_t other = 0;
+    Pose other_pose;
+    std::vector<LmdPair> lmds;
+  };
+  struct GlobalResult {
+    std::vector<GlobalPair> pairs;
+    std::uint64_t sequence = 0;
+  };
+  struct LocalPair {
+    std::uint32_t other = 0;
+    Pose other_pose;
+    LocalTracker tracker;
+    std::vector<LmdPair> lmds;
+  };
+  struct Tool {
+    std::uint32_t body = 0;
+    Device device;
+    Vec3 reference_local{0.0};
+    double radius = 0.0;                      // of the tool's bounds about the reference point
+    SeqLock<PoseSample> pose;                 // haptic -> local, global, game
+    SeqLock<PoseSample> game_pose;            // game -> haptic, for tools no device holds
+    SeqLock<WrenchSample> wrench;             // haptic -> game
+    TripleBuffer<ContactSnapshot> snapshots;  // local -> haptic
+    TripleBuffer<GlobalResult> global;        // global -> local
+    SafetyFilter filter;                      // haptic's own
+    std::vector<LocalPair> local_pairs;       // local's own
+    std::uint64_t published = 0;              // local's own: snapshots so far
+    std::vector<Contact> contacts;            // local -> game, under results_mutex_
+  };
+
+  void haptic_main();
+  void local_main();
+  void global_main();
+  void haptic_tick(Tool& tool, double now, double dt);
+  void track(Tool& tool, std::vector<const LmdPair*>& scratch);
+  // Sleeps to the next period of `role` (or not at all when back to back);
+  // records the iteration's statistics.
+  void pace(Role role, double period, double start, double& previous_start, double& deadline);
+  bool wait_while_stalled(Role role);
+  void pin(Role role);
+  double now() const;
+
+  World& world_;
+  ThreadSettings settings_;
+  std::vector<std::unique_ptr<Tool>> tools_;
+  std::vector<int> tool_of_body_;  // body slot -> index in tools_, or -1
+  std::atomic<bool> stop_{false};
+  std::atomic<bool> stalled_[3] = {};
+  std::atomic<int> pinned_[3] = {};
+  LoopStats loop_stats_[3];
+  std::atomic<std::uint64_t> invalid_poses_{0}, stale_ticks_{0}, untrusted_ticks_{0}, limited_ticks_{0},
+      torn_snapshots_{0}, dropped_contacts_{0};
+  mutable std::mutex results_mutex_;  // contacts and step stats for the game thread
+  StepStats step_stats_;
+  std::thread threads_[3];
+  bool started_ = false;
+  std::chrono::steady_clock::time_point epoch_;
+};
+
+}  // namespace prox::runtime

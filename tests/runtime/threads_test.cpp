@@ -1,0 +1,312 @@
+// The threaded runtime on the bunny scene, with real threads and the
+// built-in scripted device: functional properties only (rates and jitter are
+// for the benchmark). The haptic output must stay finite, bounded and
+// rate-limited through faults (a stalled tracker, NaN poses, a teleporting
+// pose), the threads must all make progress, and the haptic thread must
+// never allocate. At rest the threads must agree with the deterministic step.
+#include "runtime/threads.h"
+#include "runtime/scripted_device.h"
+#include "runtime/world.h"
+#include "support/scenes.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <new>
+#include <random>
+#include <thread>
+
+// ---- allocations on the haptic thread ---------------------------------------------
+// The test device marks the thread that calls it (the haptic thread); every
+// allocation made on a marked thread is counted.
+namespace {
+thread_local bool t_on_haptic_thread = false;
+std::atomic<long> g_haptic_allocations{0};
+
+void* allocate(std::size_t n) {
+  if (t_on_haptic_thread) g_haptic_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+}  // namespace
+
+void* operator new(std::size_t n) { return allocate(n); }
+void* operator new[](std::size_t n) { return allocate(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace prox::runtime {
+namespace {
+
+using prox::testing::load_obj_model;
+using prox::testing::make_query;
+using Clock = std::chrono::steady_clock;
+
+// The scripted device with faults to inject, as a misbehaving real device
+// would produce them.
+struct FaultyDevice {
+  enum Fault { None = 0, NaNPose = 1, NoPose = 2, Teleport = 3 };
+  explicit FaultyDevice(ScriptedDevice& scripted) : inner(scripted.device()) {}
+
+  Device device() { return {&FaultyDevice::read, &FaultyDevice::write, this, nullptr}; }
+
+  static bool read(void* user, DevicePose* pose) {
+    t_on_haptic_thread = true;
+    auto* self = static_cast<FaultyDevice*>(user);
+    const bool ok = self->inner.read_pose(self->inner.user, pose);
+    switch (self->fault.load()) {
+      case NaNPose:
+        pose->position[1] = std::numeric_limits<double>::quiet_NaN();
+        break;
+      case NoPose:
+        return false;
+      case Teleport:
+        pose->position[0] += 0.2;  // 20 cm in one tick
+        break;
+      default:
+        break;
+    }
+    return ok;
+  }
+  static void write(void* user, const DeviceWrench* w) {
+    auto* self = static_cast<FaultyDevice*>(user);
+    self->inner.write_wrench(self->inner.user, w);
+  }
+
+  Device inner;
+  std::atomic<int> fault{None};
+};
+
+double length(const Vec3& v) { return glm::length(v); }
+
+bool wait_until(const std::function<bool()>& done, double seconds = 60.0) {
+  const auto deadline = Clock::now() + std::chrono::duration<double>(seconds);
+  while (Clock::now() < deadline) {
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  return done();
+}
+
+class ThreadsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    bunny_ = load_obj_model("bunny.obj");
+    ASSERT_TRUE(bunny_);
+    // The tool 1 mm from the bunny at rest (a fixed random direction), and
+    // 12 mm farther out, beyond the cutoff, where the path starts.
+    std::mt19937_64 rng(11);
+    near_ = prox::testing::pose_at_gap(*bunny_, *bunny_, 0.001, rng);
+    PairState state;
+    find_lmds(make_query(*bunny_, Pose{}, *bunny_, near_, world_settings_.cutoff), Method::Precise, state,
+              expected_);
+    ASSERT_FALSE(expected_.lmds.empty());
+    expected_wrench_ = tool_wrench(world_settings_.force, expected_.lmds, near_.apply(bunny_->centre));
+    ASSERT_GT(length(expected_wrench_.force), 0.01);
+    ASSERT_FALSE(expected_wrench_.clipped) << "pick a gap where the force says something";
+    const Vec3 out = glm::normalize(expected_wrench_.force);
+    far_ = {near_.rotation, near_.translation + 0.012 * out};
+
+    world_ = std::make_unique<World>(world_settings_);
+    std::vector<double> positions;
+    std::vector<std::uint32_t> indices;
+    const Mesh& m = bunny_->mesh;
+    for (std::uint32_t v = 0; v < m.vertex_count(); ++v)
+      positions.insert(positions.end(), {m.vertex(v).x, m.vertex(v).y, m.vertex(v).z});
+    for (std::uint32_t t = 0; t < m.triangle_count(); ++t)
+      indices.insert(indices.end(), m.indices(t).begin(), m.indices(t).end());
+    Status status;
+    const Handle mesh = world_->create_mesh({positions.data(), std::uint32_t(positions.size() / 3),
+                                             indices.data(), std::uint32_t(indices.size() / 3)},
+                                            status);
+    ASSERT_TRUE(status) << status.message();
+    world_->create_body(mesh, BodyType::Static, Pose{}, Vec3(0.0));
+    tool_ = world_->create_body(mesh, BodyType::Tool, far_, bunny_->centre);
+  }
+
+  void TearDown() override {
+    if (world_) world_->stop_threads();
+  }
+
+  static ScriptedPose scripted(const Pose& p) {
+    const glm::dquat q = glm::quat_cast(p.rotation);
+    ScriptedPose s;
+    s.position = p.translation;
+    s.rotation[0] = q.w, s.rotation[1] = q.x, s.rotation[2] = q.y, s.rotation[3] = q.z;
+    return s;
+  }
+
+  // Starts the threads with the tool approaching from far to near in half a
+  // second, then held there; returns once the force has settled at rest.
+  void start_and_settle(FaultyDevice*& faulty) {
+    scripted_ = std::make_unique<ScriptedDevice>(std::vector<ScriptedPose>{scripted(far_), scripted(near_)},
+                                                 0.5, false);
+    faulty_ = std::make_unique<FaultyDevice>(*scripted_);
+    faulty = faulty_.get();
+    world_->set_device(tool_, faulty_->device());
+    Status status;
+    ASSERT_TRUE(world_->start_threads(settings_, status)) << status.message();
+    ASSERT_TRUE(settled()) << "the threads never reached the deterministic answer at rest";
+  }
+
+  bool at_rest_force() const {
+    return length(world_->wrench(tool_).force - expected_wrench_.force) <=
+           1e-9 * length(expected_wrench_.force);
+  }
+  bool settled() {
+    return wait_until([&] { return scripted_->record().progress >= 1.0 && at_rest_force(); });
+  }
+  bool faded_out() {
+    return wait_until([&] { return length(world_->wrench(tool_).force) == 0.0; }, 30.0);
+  }
+
+  // What every run must keep, whatever was injected.
+  void expect_safe_output() {
+    const ScriptedRecord r = scripted_->record();
+    EXPECT_TRUE(r.finite);
+    EXPECT_LE(r.max_force, world_settings_.force.max_force + 1e-12);
+    EXPECT_LE(r.max_torque, world_settings_.force.max_torque + 1e-12);
+    // The gate's rate times its longest step (5 ms), whatever the gaps.
+    EXPECT_LE(r.max_force_step, settings_.max_force_rate * 0.005 + 1e-9);
+    const HapticCounters c = world_->threads()->haptic_counters();
+    EXPECT_EQ(c.torn_snapshots, 0u);
+    EXPECT_EQ(g_haptic_allocations.load(), 0) << "the haptic thread allocated";
+  }
+
+  WorldSettings world_settings_;
+  ThreadSettings settings_;
+  std::shared_ptr<const prox::testing::Model> bunny_;
+  Pose near_, far_;
+  ProximityResult expected_;
+  Wrench expected_wrench_;
+  std::unique_ptr<World> world_;
+  Handle tool_;
+  std::unique_ptr<ScriptedDevice> scripted_;
+  std::unique_ptr<FaultyDevice> faulty_;
+};
+
+TEST_F(ThreadsTest, ApproachAndRestAgreeWithTheDeterministicStep) {
+  FaultyDevice* device = nullptr;
+  start_and_settle(device);
+  // Every thread made progress.
+  Threads& threads = *world_->threads();
+  EXPECT_GT(threads.loop_summary(Role::Haptic).updates, 100u);
+  EXPECT_GT(threads.loop_summary(Role::Local).updates, 10u);
+  EXPECT_GT(threads.loop_summary(Role::Global).updates, 1u);
+  // At rest the tracked set is the global search's: same contacts.
+  std::vector<Contact> contacts;
+  world_->contacts(tool_, contacts);
+  EXPECT_EQ(contacts.size(), expected_.lmds.size());
+  const Pose pose = world_->current_pose(tool_);
+  EXPECT_LE(length(pose.translation - near_.translation), 1e-12);
+  EXPECT_GT(world_->stats().pairs_in_range, 0);
+  expect_safe_output();
+  // Stopping fades the device out rather than dropping the force.
+  world_->stop_threads();
+  EXPECT_EQ(length(scripted_->record().last_force), 0.0);
+  expect_safe_output();
+  // And the results stay readable after the stop.
+  world_->contacts(tool_, contacts);
+  EXPECT_EQ(contacts.size(), expected_.lmds.size());
+}
+
+TEST_F(ThreadsTest, StalledTrackerFadesOutAndRecovers) {
+  FaultyDevice* device = nullptr;
+  start_and_settle(device);
+  Threads& threads = *world_->threads();
+  threads.stall(Role::Local, true);
+  ASSERT_TRUE(faded_out()) << "stale contacts kept a force on the device";
+  EXPECT_GT(threads.haptic_counters().stale_ticks, 0u);
+  threads.stall(Role::Local, false);
+  EXPECT_TRUE(settled());
+  expect_safe_output();
+}
+
+TEST_F(ThreadsTest, StalledGlobalSearchKeepsTheForce) {
+  FaultyDevice* device = nullptr;
+  start_and_settle(device);
+  Threads& threads = *world_->threads();
+  threads.stall(Role::Global, true);
+  const std::uint64_t local_before = threads.loop_summary(Role::Local).updates;
+  EXPECT_TRUE(wait_until([&] { return threads.loop_summary(Role::Local).updates > local_before + 50; }));
+  EXPECT_TRUE(at_rest_force()) << "local tracking alone holds the contacts";
+  threads.stall(Role::Global, false);
+  expect_safe_output();
+}
+
+TEST_F(ThreadsTest, NaNAndMissingPosesFadeOutAndRecover) {
+  FaultyDevice* device = nullptr;
+  start_and_settle(device);
+  for (int fault : {FaultyDevice::NaNPose, FaultyDevice::NoPose}) {
+    device->fault.store(fault);
+    ASSERT_TRUE(faded_out()) << "fault " << fault;
+    device->fault.store(FaultyDevice::None);
+    EXPECT_TRUE(settled()) << "fault " << fault;
+  }
+  EXPECT_GT(world_->threads()->haptic_counters().invalid_poses, 0u);
+  const Pose pose = world_->current_pose(tool_);
+  EXPECT_TRUE(std::isfinite(pose.translation.y)) << "a NaN pose never reaches the trackers";
+  expect_safe_output();
+}
+
+TEST_F(ThreadsTest, TeleportingPoseDoesNotSpike) {
+  FaultyDevice* device = nullptr;
+  start_and_settle(device);
+  device->fault.store(FaultyDevice::Teleport);
+  ASSERT_TRUE(faded_out()) << "contacts tracked 20 cm away were rendered";
+  EXPECT_GT(world_->threads()->haptic_counters().untrusted_ticks, 0u);
+  device->fault.store(FaultyDevice::None);
+  EXPECT_TRUE(settled());
+  expect_safe_output();
+}
+
+TEST_F(ThreadsTest, ToolMovedByTheGameThread) {
+  // No device: the game thread's set_pose moves the tool while the threads run.
+  Status status;
+  ASSERT_TRUE(world_->start_threads(settings_, status)) << status.message();
+  EXPECT_EQ(length(world_->wrench(tool_).force), 0.0);
+  world_->set_pose(tool_, near_);
+  EXPECT_TRUE(wait_until([&] { return at_rest_force(); }));
+  std::vector<Contact> contacts;
+  world_->contacts(tool_, contacts);
+  EXPECT_EQ(contacts.size(), expected_.lmds.size());
+  EXPECT_EQ(world_->threads()->haptic_counters().torn_snapshots, 0u);
+}
+
+TEST_F(ThreadsTest, BadSettingsAreRefusedByName) {
+  struct Case {
+    std::function<void(ThreadSettings&)> spoil;
+    const char* word;
+  };
+  const Case cases[] = {
+      {[](ThreadSettings& s) { s.haptic_rate = 0.0; }, "haptic rate"},
+      {[](ThreadSettings& s) { s.haptic_rate = std::numeric_limits<double>::quiet_NaN(); }, "haptic rate"},
+      {[](ThreadSettings& s) { s.local_rate = -1.0; }, "local rate"},
+      {[](ThreadSettings& s) { s.global_rate = std::numeric_limits<double>::infinity(); }, "global rate"},
+      {[](ThreadSettings& s) { s.stale_after = 0.0; }, "staleness"},
+      {[](ThreadSettings& s) { s.max_force_rate = -3.0; }, "force rate"},
+      {[](ThreadSettings& s) { s.max_torque_rate = 0.0; }, "torque rate"},
+      {[](ThreadSettings& s) { s.trust_distance = -1.0; }, "trust distance"},
+      {[](ThreadSettings& s) { s.max_contacts = 0; }, "contacts"},
+      {[](ThreadSettings& s) { s.cores[1] = 4096; }, "local thread's core"},
+  };
+  for (const Case& c : cases) {
+    ThreadSettings s;
+    c.spoil(s);
+    Status status;
+    EXPECT_FALSE(world_->start_threads(s, status)) << c.word;
+    EXPECT_NE(status.message().find(c.word), std::string::npos) << status.message();
+    EXPECT_FALSE(world_->running());
+  }
+}
+
+}  // namespace
+}  // namespace prox::runtime
