@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds everything and runs every test: the core alone (optional parts off),
-# an AddressSanitizer + UndefinedBehaviorSanitizer build of the whole suite,
-# the micro-benchmarks once (so they never rot), and the release suite last.
+# an AddressSanitizer + UndefinedBehaviorSanitizer build of the whole suite, a
+# ThreadSanitizer build of the threaded tests, the benchmarks once (so they
+# never rot), and the release suite last.
 # Works on a fresh Debian 12 machine; installs the packages it needs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,6 +25,11 @@ echo "== address + undefined-behaviour sanitizers"
 configure build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=address,undefined
 cmake --build build/asan -j "$jobs"
 ctest --test-dir build/asan --output-on-failure -j "$jobs"
+
+echo "== thread sanitizer (the tests labelled 'threads': handoffs, runtime threads, C API threads)"
+configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=thread -DPROX_BUILD_SAMPLES=OFF
+cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests
+ctest --test-dir build/tsan --output-on-failure -L threads
 
 echo "== release"
 configure build/release -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_BENCHMARKS=ON

@@ -17,6 +17,14 @@ _Static_assert(sizeof(proxWrench) == 56, "proxWrench");
 _Static_assert(sizeof(proxWorldStats) == 32, "proxWorldStats");
 _Static_assert(sizeof(proxMeshInfo) == 72, "proxMeshInfo");
 _Static_assert(sizeof(proxPolylineInfo) == 32, "proxPolylineInfo");
+_Static_assert(sizeof(proxDeviceDef) == 32, "proxDeviceDef");
+_Static_assert(sizeof(proxScriptedDeviceId) == 16, "proxScriptedDeviceId");
+_Static_assert(sizeof(proxScriptedDeviceDef) == 32, "proxScriptedDeviceDef");
+_Static_assert(sizeof(proxScriptedDeviceRecord) == 104, "proxScriptedDeviceRecord");
+_Static_assert(sizeof(proxThreadsDef) == 80, "proxThreadsDef");
+_Static_assert(sizeof(proxThreadStats) == 88, "proxThreadStats");
+_Static_assert(sizeof(proxSafetyStats) == 48, "proxSafetyStats");
+_Static_assert(sizeof(proxThread) == 4, "enums are 32-bit");
 _Static_assert(sizeof(proxResult) == 4, "enums are 32-bit");
 _Static_assert(sizeof(proxBodyType) == 4, "enums are 32-bit");
 

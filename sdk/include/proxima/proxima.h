@@ -16,7 +16,11 @@
  * Threads: each function says from which thread it may be called.
  *   "game"  - the thread that created the world (scene updates, rendering);
  *   "any"   - any thread, concurrently with anything.
- * Calls from the wrong thread fail with PROX_ERROR_WRONG_THREAD.
+ * Calls from the wrong thread fail with PROX_ERROR_WRONG_THREAD. A world
+ * either steps on the game thread (proxWorld_Step) or runs its own haptic,
+ * local tracking and global search threads (proxWorld_StartThreads); while
+ * they run, the scene's shape is frozen (PROX_ERROR_BUSY). Who owns what is
+ * in docs/threading.md.
  *
  * A newcomer's walkthrough is samples/hello/hello.c.
  */
@@ -63,6 +67,7 @@ typedef enum proxResult {
   PROX_ERROR_WRONG_THREAD = -8,     /* called from a thread the function does not allow */
   PROX_ERROR_CAPACITY = -9,         /* an output buffer is too small (the count says how big) */
   PROX_ERROR_INTERNAL = -10,        /* a bug in Proxima: please report it with the message */
+  PROX_ERROR_BUSY = -11,            /* the world's threads are running: stop them first */
   PROX_RESULT_FORCE32 = 0x7FFFFFFF
 } proxResult;
 
@@ -152,7 +157,8 @@ PROX_API proxWorldDef proxDefaultWorldDef(void);
 
 /* Creates a world; the calling thread becomes its game thread. */
 PROX_API proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world);
-/* Destroys a world and everything in it. Game thread. */
+/* Destroys a world and everything in it, stopping its threads first (the
+ * devices fade out). Game thread. */
 PROX_API proxResult proxDestroyWorld(proxWorldId world);
 /* Whether an id names a live world. Any thread. */
 PROX_API proxBool proxWorld_IsValid(proxWorldId world);
@@ -171,7 +177,8 @@ PROX_API proxMeshDef proxDefaultMeshDef(void);
 
 /* Validates the data (finite coordinates, indices in range, at least one
  * non-degenerate triangle), welds vertices by position, builds the topology
- * and the hierarchy. The data is copied. Game thread. */
+ * and the hierarchy. The data is copied. Game thread; meshes cannot be
+ * created or destroyed while the threads run (PROX_ERROR_BUSY). */
 PROX_API proxResult proxWorld_CreateMesh(proxWorldId world, const proxMeshDef* def, proxMeshId* mesh);
 
 /* Reads a mesh from an OBJ, glTF (.gltf) or binary glTF (.glb) file; a glTF
@@ -212,7 +219,10 @@ typedef struct proxBodyDef {
 } proxBodyDef;
 
 PROX_API proxBodyDef proxDefaultBodyDef(void);
-/* Game thread. */
+/* Game thread. Create and destroy: PROX_ERROR_BUSY while the threads run.
+ * SetPose while they run: taken at the threads' next iteration; refused for
+ * a tool a device holds. GetPose of a tool while they run: the pose the
+ * haptic loop last read. */
 PROX_API proxResult proxWorld_CreateBody(proxWorldId world, const proxBodyDef* def, proxBodyId* body);
 PROX_API proxResult proxBody_Destroy(proxBodyId body);
 PROX_API proxResult proxBody_SetPose(proxBodyId body, const proxPose* pose);
@@ -220,7 +230,8 @@ PROX_API proxResult proxBody_GetPose(proxBodyId body, proxPose* pose);
 
 /* ---- stepping and results ---------------------------------------------------- */
 
-/* Runs the whole method once, on the calling thread, deterministically: for
+/* Runs the whole method once, on the calling thread, deterministically
+ * (PROX_ERROR_BUSY while the world's threads run): for
  * every tool, the bodies within the cutoff (a broadphase skips the rest), a
  * global search with its reduction per pair (skipped when no pose changed),
  * and the force and torque. For tests, benchmarks and engines that own their
@@ -237,7 +248,8 @@ typedef struct proxContact {
   int32_t featureTool, featureOther; /* 0 vertex, 1 edge, 2 face */
 } proxContact;
 
-/* The tool's contacts after the last step: copies up to `capacity` into
+/* The tool's contacts after the last step (while the threads run: local
+ * tracking's latest): copies up to `capacity` into
  * `contacts` (may be NULL when capacity is 0) and sets *count to how many
  * there are; PROX_ERROR_CAPACITY when they did not all fit. Game thread. */
 PROX_API proxResult proxBody_GetContacts(proxBodyId tool, proxContact* contacts, int32_t capacity,
@@ -249,7 +261,8 @@ typedef struct proxWrench {
   proxBool clipped;
 } proxWrench;
 
-/* The force and torque on a tool after the last step. Game thread. */
+/* The force and torque on a tool after the last step (while the threads
+ * run: what the haptic loop last handed the device). Game thread. */
 PROX_API proxResult proxBody_GetWrench(proxBodyId tool, proxWrench* wrench);
 
 typedef struct proxPolylineInfo {
@@ -283,6 +296,144 @@ typedef struct proxWorldStats {
 
 /* Game thread. */
 PROX_API proxResult proxWorld_GetStats(proxWorldId world, proxWorldStats* stats);
+
+/* ---- devices ---------------------------------------------------------------- */
+
+/* A haptic device: two callbacks and your pointer, called from the haptic
+ * thread at its rate while the world's threads run. They must return
+ * quickly and must not call Proxima. */
+typedef struct proxDeviceDef {
+  /* Writes the tool's world pose and returns nonzero, or returns 0 when the
+   * device has no pose this tick (the force then fades out). A non-finite
+   * pose or a quaternion far from unit length counts as none. Required. */
+  proxBool (*readPose)(void* userData, proxPose* pose);
+  /* Receives the force and torque to render: always finite, within the
+   * world's maxima and rate-limited (clipped is set when the safety gate
+   * changed it). May be NULL. */
+  void (*writeWrench)(void* userData, const proxWrench* wrench);
+  void* userData;
+  int32_t internalValue;
+  int32_t reserved;
+} proxDeviceDef;
+
+PROX_API proxDeviceDef proxDefaultDeviceDef(void);
+
+/* Lets a device hold a tool while the threads run (def NULL: none; the
+ * game thread's proxBody_SetPose then moves the tool). The def is copied.
+ * Game thread; PROX_ERROR_BUSY while the threads run. */
+PROX_API proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def);
+
+/* The built-in scripted device: a tool moved along a path of poses, for
+ * tests, demos and replays. It lives as long as its world. */
+typedef struct proxScriptedDeviceId {
+  uint32_t index1;
+  uint32_t reserved;
+  proxWorldId world;
+} proxScriptedDeviceId;
+
+typedef struct proxScriptedDeviceDef {
+  const proxPose* poses; /* the path; copied */
+  int32_t poseCount;     /* >= 1 */
+  proxBool loop;         /* start over after the last pose, or hold it */
+  double secondsPerPose; /* > 0: the device moves through the poses at this pace, interpolating */
+  int32_t internalValue;
+  int32_t reserved;
+} proxScriptedDeviceDef;
+
+PROX_API proxScriptedDeviceDef proxDefaultScriptedDeviceDef(void);
+/* Game thread. */
+PROX_API proxResult proxWorld_CreateScriptedDevice(proxWorldId world, const proxScriptedDeviceDef* def,
+                                                   proxScriptedDeviceId* device);
+/* Reads the path from a file: one pose per line, "tx ty tz qw qx qy qz",
+ * '#' comments (the CLI's --poses format). Game thread. */
+PROX_API proxResult proxWorld_LoadScriptedDevice(proxWorldId world, const char* path, double secondsPerPose,
+                                                 proxBool loop, proxScriptedDeviceId* device);
+/* The def that attaches it with proxBody_SetDevice. Game thread. */
+PROX_API proxResult proxScriptedDevice_GetDeviceDef(proxScriptedDeviceId device, proxDeviceDef* def);
+
+/* What the scripted device has been handed so far. */
+typedef struct proxScriptedDeviceRecord {
+  uint64_t reads, writes;
+  double progress;     /* poses into the path (fractional) */
+  double maxForce;     /* N: largest |force| written */
+  double maxTorque;    /* N m: largest |torque| written */
+  double maxForceStep; /* N: largest |force change| between consecutive writes */
+  proxVec3 lastForce, lastTorque;
+  proxBool allFinite; /* every value written was finite */
+  int32_t reserved;
+} proxScriptedDeviceRecord;
+
+/* Game thread. */
+PROX_API proxResult proxScriptedDevice_GetRecord(proxScriptedDeviceId device, proxScriptedDeviceRecord* record);
+
+/* ---- threads --------------------------------------------------------------------- */
+
+typedef struct proxThreadsDef {
+  double hapticRate; /* Hz: the haptic loop (default 1000) */
+  double localRate;  /* Hz: local tracking (default 1000; 0: back to back) */
+  double globalRate; /* Hz: global search (default 0: back to back, idle while nothing moves) */
+  /* The core each thread is pinned to; -1 (the default): not pinned. */
+  int32_t hapticCore, localCore, globalCore;
+  int32_t maxContacts;  /* per tool handed to the haptic loop, the closest first (default 1024) */
+  double staleAfter;    /* s: contacts older than this fade the force out (default 0.05) */
+  double maxForceRate;  /* N/s: how fast the force may change (default 300) */
+  double maxTorqueRate; /* N m/s (default 30) */
+  /* m: contacts tracked at a tool pose farther than this from the current
+   * one are not rendered (a teleport; the force fades out until tracking
+   * catches up). 0 (the default): the world's cutoff. */
+  double trustDistance;
+  int32_t internalValue;
+  int32_t reserved;
+} proxThreadsDef;
+
+PROX_API proxThreadsDef proxDefaultThreadsDef(void);
+
+/* Starts the haptic, local tracking and global search threads. While they
+ * run: meshes and bodies can be neither created nor destroyed, and
+ * proxWorld_Step and proxBody_SetDevice are refused (PROX_ERROR_BUSY);
+ * proxBody_SetPose moves static and movable bodies and tools no device
+ * holds; contacts, wrench, pose and stats read the threads' latest results.
+ * Game thread. */
+PROX_API proxResult proxWorld_StartThreads(proxWorldId world, const proxThreadsDef* def);
+/* Fades every device's force out, then stops and joins the threads; the
+ * last results stay readable. No effect when they do not run. Game thread. */
+PROX_API proxResult proxWorld_StopThreads(proxWorldId world);
+
+typedef enum proxThread {
+  PROX_THREAD_HAPTIC = 0,
+  PROX_THREAD_LOCAL = 1,
+  PROX_THREAD_GLOBAL = 2,
+  PROX_THREAD_FORCE32 = 0x7FFFFFFF
+} proxThread;
+
+/* One thread's timing over its last 4096 iterations (maxima and counts over
+ * the whole run), from the running threads or the last ones stopped. */
+typedef struct proxThreadStats {
+  proxBool running;
+  int32_t pinnedCore;    /* -1: not pinned */
+  double targetRate;     /* Hz; 0: back to back */
+  double achievedRate;   /* Hz */
+  double periodP50, periodP99, periodMax; /* s, iteration start to start */
+  double updateP50, updateP99, updateMax; /* s of work per iteration */
+  uint64_t updates;
+  uint64_t overruns; /* iterations that missed the next period's start */
+} proxThreadStats;
+
+/* Game thread. */
+PROX_API proxResult proxWorld_GetThreadStats(proxWorldId world, proxThread thread, proxThreadStats* stats);
+
+/* The haptic loop's safety decisions, counted in ticks over all tools. */
+typedef struct proxSafetyStats {
+  uint64_t invalidPoses;    /* the device gave no pose, or an invalid one */
+  uint64_t staleTicks;      /* contacts older than staleAfter: faded out */
+  uint64_t untrustedTicks;  /* tool farther than trustDistance from where contacts were tracked */
+  uint64_t limitedTicks;    /* the gate changed the wrench (clip or rate) */
+  uint64_t tornSnapshots;   /* a contact snapshot failed its checksum (never expected) */
+  uint64_t droppedContacts; /* contacts beyond maxContacts, summed over snapshots */
+} proxSafetyStats;
+
+/* Game thread. */
+PROX_API proxResult proxWorld_GetSafetyStats(proxWorldId world, proxSafetyStats* stats);
 
 #ifdef __cplusplus
 }

@@ -3,6 +3,8 @@
 #include <proxima/proxima.h>
 
 #include "io/obj.h"
+#include "io/poses.h"
+#include "runtime/threads.h"
 #include "runtime/world.h"
 #if PROX_WITH_GLTF
 #include "io/gltf.h"
@@ -36,7 +38,16 @@ static_assert(sizeof(proxWrench) == 56, "ABI");
 static_assert(sizeof(proxWorldStats) == 32, "ABI");
 static_assert(sizeof(proxPolylineInfo) == 32, "ABI");
 static_assert(sizeof(proxMeshInfo) == 68 + 4, "ABI");
-static_assert(sizeof(proxResult) == 4 && sizeof(proxMethod) == 4 && sizeof(proxBodyType) == 4, "ABI");
+static_assert(sizeof(proxDeviceDef) == 32, "ABI");
+static_assert(sizeof(proxScriptedDeviceId) == 16, "ABI");
+static_assert(sizeof(proxScriptedDeviceDef) == 32, "ABI");
+static_assert(sizeof(proxScriptedDeviceRecord) == 104, "ABI");
+static_assert(sizeof(proxThreadsDef) == 80, "ABI");
+static_assert(sizeof(proxThreadStats) == 88, "ABI");
+static_assert(sizeof(proxSafetyStats) == 48, "ABI");
+static_assert(sizeof(proxResult) == 4 && sizeof(proxMethod) == 4 && sizeof(proxBodyType) == 4 &&
+                  sizeof(proxThread) == 4,
+              "ABI");
 
 namespace {
 
@@ -121,6 +132,11 @@ runtime::Handle tool_of(proxBodyId id, runtime::World*& world) {
   if (world->type(h) != runtime::BodyType::Tool)
     fail(PROX_ERROR_INVALID_ARGUMENT, "tool is not a PROX_BODY_TOOL body");
   return h;
+}
+
+// Calls that change the scene's shape wait for the threads to stop.
+void need_stopped(const runtime::World& w) {
+  if (w.running()) fail(PROX_ERROR_BUSY, "the world's threads are running; call proxWorld_StopThreads first");
 }
 
 // ---- conversions and checks -------------------------------------------------------
@@ -211,6 +227,73 @@ proxMeshId add_mesh(proxWorldId world_id, runtime::World& world, const MeshInput
   return make_mesh_id(world_id, h);
 }
 
+// A C device behind the runtime's device: converts on the haptic thread
+// (no allocation, no lock).
+struct DeviceAdapter {
+  explicit DeviceAdapter(const proxDeviceDef& d) : def(d) {}
+  static bool read(void* user, runtime::DevicePose* out) {
+    const auto* self = static_cast<const DeviceAdapter*>(user);
+    proxPose p{};
+    if (!self->def.readPose(self->def.userData, &p)) return false;
+    out->position[0] = p.position.x, out->position[1] = p.position.y, out->position[2] = p.position.z;
+    out->rotation[0] = p.rotation.w, out->rotation[1] = p.rotation.x, out->rotation[2] = p.rotation.y,
+    out->rotation[3] = p.rotation.z;
+    return true;
+  }
+  static void write(void* user, const runtime::DeviceWrench* w) {
+    const auto* self = static_cast<const DeviceAdapter*>(user);
+    const proxWrench out{{w->force[0], w->force[1], w->force[2]},
+                         {w->torque[0], w->torque[1], w->torque[2]},
+                         w->limited ? 1 : 0};
+    self->def.writeWrench(self->def.userData, &out);
+  }
+  proxDeviceDef def;
+};
+
+// The scripted device seen through the C device callbacks.
+struct ScriptedTrampoline {
+  static proxBool read(void* user, proxPose* pose) {
+    auto* d = static_cast<runtime::ScriptedDevice*>(user);
+    const runtime::Device device = d->device();
+    runtime::DevicePose p{};
+    if (!device.read_pose(device.user, &p)) return 0;
+    *pose = {{p.position[0], p.position[1], p.position[2]},
+             {p.rotation[0], p.rotation[1], p.rotation[2], p.rotation[3]}};
+    return 1;
+  }
+  static void write(void* user, const proxWrench* w) {
+    auto* d = static_cast<runtime::ScriptedDevice*>(user);
+    const runtime::Device device = d->device();
+    const runtime::DeviceWrench out{
+        {w->force.x, w->force.y, w->force.z}, {w->torque.x, w->torque.y, w->torque.z}, w->clipped != 0};
+    device.write_wrench(device.user, &out);
+  }
+};
+
+runtime::ScriptedPose scripted(const Pose& pose) {
+  const glm::dquat q = glm::quat_cast(pose.rotation);
+  runtime::ScriptedPose p;
+  p.position = pose.translation;
+  p.rotation[0] = q.w, p.rotation[1] = q.x, p.rotation[2] = q.y, p.rotation[3] = q.z;
+  return p;
+}
+
+proxScriptedDeviceId add_scripted(proxWorldId world, runtime::World& w,
+                                  std::vector<runtime::ScriptedPose> poses, double seconds_per_pose,
+                                  bool loop) {
+  const std::uint32_t i = w.add_scripted_device(
+      std::make_unique<runtime::ScriptedDevice>(std::move(poses), seconds_per_pose, loop));
+  return {i + 1, 0, world};
+}
+
+runtime::ScriptedDevice& scripted_of(proxScriptedDeviceId id) {
+  const runtime::World& w = world_of(id.world, "device's world");
+  if (id.index1 == 0) fail(PROX_ERROR_INVALID_HANDLE, "device is a null id");
+  runtime::ScriptedDevice* d = w.scripted_device(id.index1 - 1);
+  if (!d) fail(PROX_ERROR_INVALID_HANDLE, "device does not name a scripted device of its world");
+  return *d;
+}
+
 }  // namespace
 
 extern "C" {
@@ -239,6 +322,8 @@ const char* proxResultString(proxResult result) {
       return "PROX_ERROR_CAPACITY";
     case PROX_ERROR_INTERNAL:
       return "PROX_ERROR_INTERNAL";
+    case PROX_ERROR_BUSY:
+      return "PROX_ERROR_BUSY";
     case PROX_RESULT_FORCE32:
       break;
   }
@@ -318,6 +403,7 @@ proxResult proxWorld_CreateMesh(proxWorldId world, const proxMeshDef* def, proxM
     need(mesh, "mesh");
     *mesh = proxMeshId{};
     runtime::World& w = world_of(world);
+    need_stopped(w);
     need(def, "def");
     if (def->internalValue != kDefCookie)
       fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultMeshDef()");
@@ -330,6 +416,7 @@ proxResult proxWorld_LoadMesh(proxWorldId world, const char* path, proxMeshId* m
     need(mesh, "mesh");
     *mesh = proxMeshId{};
     runtime::World& w = world_of(world);
+    need_stopped(w);
     need(path, "path");
     std::string p(path);
     std::string ext = p.substr(p.find_last_of('.') == std::string::npos ? p.size() : p.find_last_of('.') + 1);
@@ -363,6 +450,7 @@ proxResult proxMesh_Destroy(proxMeshId mesh) {
   return guard("proxMesh_Destroy", [&] {
     runtime::World* w = nullptr;
     const runtime::Handle h = mesh_of(mesh, w);
+    need_stopped(*w);
     Status s;
     if (!w->destroy_mesh(h, s)) fail(PROX_ERROR_INVALID_ARGUMENT, s.message());
   });
@@ -393,6 +481,7 @@ proxResult proxWorld_CreateBody(proxWorldId world, const proxBodyDef* def, proxB
     need(body, "body");
     *body = proxBodyId{};
     runtime::World& w = world_of(world);
+    need_stopped(w);
     need(def, "def");
     if (def->internalValue != kDefCookie)
       fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultBodyDef()");
@@ -424,6 +513,7 @@ proxResult proxBody_Destroy(proxBodyId body) {
   return guard("proxBody_Destroy", [&] {
     runtime::World* w = nullptr;
     const runtime::Handle h = body_of(body, w);
+    need_stopped(*w);
     w->destroy_body(h);
   });
 }
@@ -436,6 +526,8 @@ proxResult proxBody_SetPose(proxBodyId body, const proxPose* pose) {
     const Pose p = to_pose(*pose, "pose");
     if (w->type(h) == runtime::BodyType::Static)
       fail(PROX_ERROR_INVALID_ARGUMENT, "body is static; create it PROX_BODY_MOVABLE to move it");
+    if (w->running() && w->device(h).attached())
+      fail(PROX_ERROR_BUSY, "body is a tool held by a device while the threads run; the device moves it");
     w->set_pose(h, p);
   });
 }
@@ -445,12 +537,16 @@ proxResult proxBody_GetPose(proxBodyId body, proxPose* pose) {
     need(pose, "pose");
     runtime::World* w = nullptr;
     const runtime::Handle h = body_of(body, w);
-    *pose = to_c(w->pose(h));
+    *pose = to_c(w->current_pose(h));
   });
 }
 
 proxResult proxWorld_Step(proxWorldId world) {
-  return guard("proxWorld_Step", [&] { world_of(world).step(); });
+  return guard("proxWorld_Step", [&] {
+    runtime::World& w = world_of(world);
+    need_stopped(w);
+    w.step();
+  });
 }
 
 proxResult proxBody_GetContacts(proxBodyId tool, proxContact* contacts, int32_t capacity, int32_t* count) {
@@ -461,7 +557,8 @@ proxResult proxBody_GetContacts(proxBodyId tool, proxContact* contacts, int32_t 
     if (capacity > 0) need(contacts, "contacts");
     runtime::World* w = nullptr;
     const runtime::Handle h = tool_of(tool, w);
-    const std::vector<runtime::Contact>& list = w->contacts(h);
+    std::vector<runtime::Contact> list;
+    w->contacts(h, list);
     *count = static_cast<int32_t>(list.size());
     const std::size_t n = std::min<std::size_t>(list.size(), static_cast<std::size_t>(capacity));
     for (std::size_t i = 0; i < n; ++i) {
@@ -491,7 +588,7 @@ proxResult proxBody_GetWrench(proxBodyId tool, proxWrench* wrench) {
     need(wrench, "wrench");
     runtime::World* w = nullptr;
     const runtime::Handle h = tool_of(tool, w);
-    const Wrench& x = w->wrench(h);
+    const Wrench x = w->wrench(h);
     *wrench = {to_c(x.force), to_c(x.torque), x.clipped ? 1 : 0};
   });
 }
@@ -548,10 +645,202 @@ proxResult proxWorld_GetStats(proxWorldId world, proxWorldStats* stats) {
   return guard("proxWorld_GetStats", [&] {
     need(stats, "stats");
     const runtime::World& w = world_of(world);
-    const runtime::StepStats& s = w.stats();
+    const runtime::StepStats s = w.stats();
     *stats = {w.body_count(),   w.tool_count(), s.pairs_in_range,
               s.pairs_searched, s.contacts,     static_cast<int32_t>(s.candidates),
               s.seconds};
+  });
+}
+
+// ---- devices ---------------------------------------------------------------------
+
+proxDeviceDef proxDefaultDeviceDef(void) {
+  proxDeviceDef d{};
+  d.internalValue = kDefCookie;
+  return d;
+}
+
+proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def) {
+  return guard("proxBody_SetDevice", [&] {
+    runtime::World* w = nullptr;
+    const runtime::Handle h = tool_of(tool, w);
+    need_stopped(*w);
+    if (!def) {
+      w->set_device(h, runtime::Device{});
+      return;
+    }
+    if (def->internalValue != kDefCookie)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultDeviceDef()");
+    if (!def->readPose) fail(PROX_ERROR_INVALID_ARGUMENT, "def->readPose is NULL");
+    auto adapter = std::make_shared<DeviceAdapter>(*def);
+    runtime::Device d;
+    d.read_pose = &DeviceAdapter::read;
+    d.write_wrench = def->writeWrench ? &DeviceAdapter::write : nullptr;
+    d.user = adapter.get();
+    d.owner = adapter;
+    w->set_device(h, d);
+  });
+}
+
+proxScriptedDeviceDef proxDefaultScriptedDeviceDef(void) {
+  proxScriptedDeviceDef d{};
+  d.secondsPerPose = 0.001;
+  d.internalValue = kDefCookie;
+  return d;
+}
+
+proxResult proxWorld_CreateScriptedDevice(proxWorldId world, const proxScriptedDeviceDef* def,
+                                          proxScriptedDeviceId* device) {
+  return guard("proxWorld_CreateScriptedDevice", [&] {
+    need(device, "device");
+    *device = proxScriptedDeviceId{};
+    runtime::World& w = world_of(world);
+    need(def, "def");
+    if (def->internalValue != kDefCookie)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultScriptedDeviceDef()");
+    if (def->poseCount < 1) fail(PROX_ERROR_INVALID_ARGUMENT, "def->poseCount must be >= 1");
+    need(def->poses, "def->poses");
+    need_positive(def->secondsPerPose, "def->secondsPerPose");
+    std::vector<runtime::ScriptedPose> path(static_cast<std::size_t>(def->poseCount));
+    for (int32_t i = 0; i < def->poseCount; ++i)
+      path[std::size_t(i)] = scripted(to_pose(def->poses[i], "def->poses[" + std::to_string(i) + "]"));
+    *device = add_scripted(world, w, std::move(path), def->secondsPerPose, def->loop != 0);
+  });
+}
+
+proxResult proxWorld_LoadScriptedDevice(proxWorldId world, const char* path, double secondsPerPose,
+                                        proxBool loop, proxScriptedDeviceId* device) {
+  return guard("proxWorld_LoadScriptedDevice", [&] {
+    need(device, "device");
+    *device = proxScriptedDeviceId{};
+    runtime::World& w = world_of(world);
+    need(path, "path");
+    need_positive(secondsPerPose, "secondsPerPose");
+    std::vector<io::PoseRecord> records;
+    check(io::read_poses(path, records));
+    std::vector<runtime::ScriptedPose> poses;
+    for (const io::PoseRecord& r : records) {
+      runtime::ScriptedPose p;
+      p.position = Vec3(r.position[0], r.position[1], r.position[2]);
+      for (int k = 0; k < 4; ++k) p.rotation[k] = r.rotation[k];
+      poses.push_back(p);
+    }
+    *device = add_scripted(world, w, std::move(poses), secondsPerPose, loop != 0);
+  });
+}
+
+proxResult proxScriptedDevice_GetDeviceDef(proxScriptedDeviceId device, proxDeviceDef* def) {
+  return guard("proxScriptedDevice_GetDeviceDef", [&] {
+    need(def, "def");
+    runtime::ScriptedDevice& d = scripted_of(device);
+    *def = proxDefaultDeviceDef();
+    def->readPose = &ScriptedTrampoline::read;
+    def->writeWrench = &ScriptedTrampoline::write;
+    def->userData = &d;
+  });
+}
+
+proxResult proxScriptedDevice_GetRecord(proxScriptedDeviceId device, proxScriptedDeviceRecord* record) {
+  return guard("proxScriptedDevice_GetRecord", [&] {
+    need(record, "record");
+    const runtime::ScriptedRecord r = scripted_of(device).record();
+    *record = proxScriptedDeviceRecord{};
+    record->reads = r.reads;
+    record->writes = r.writes;
+    record->progress = r.progress;
+    record->maxForce = r.max_force;
+    record->maxTorque = r.max_torque;
+    record->maxForceStep = r.max_force_step;
+    record->lastForce = to_c(r.last_force);
+    record->lastTorque = to_c(r.last_torque);
+    record->allFinite = r.finite ? 1 : 0;
+  });
+}
+
+// ---- threads -------------------------------------------------------------------------
+
+proxThreadsDef proxDefaultThreadsDef(void) {
+  const runtime::ThreadSettings s;
+  proxThreadsDef d{};
+  d.hapticRate = s.haptic_rate;
+  d.localRate = s.local_rate;
+  d.globalRate = s.global_rate;
+  d.hapticCore = s.cores[0];
+  d.localCore = s.cores[1];
+  d.globalCore = s.cores[2];
+  d.maxContacts = s.max_contacts;
+  d.staleAfter = s.stale_after;
+  d.maxForceRate = s.max_force_rate;
+  d.maxTorqueRate = s.max_torque_rate;
+  d.trustDistance = s.trust_distance;
+  d.internalValue = kDefCookie;
+  return d;
+}
+
+proxResult proxWorld_StartThreads(proxWorldId world, const proxThreadsDef* def) {
+  return guard("proxWorld_StartThreads", [&] {
+    runtime::World& w = world_of(world);
+    need(def, "def");
+    if (def->internalValue != kDefCookie)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultThreadsDef()");
+    if (w.running()) fail(PROX_ERROR_BUSY, "the world's threads are already running");
+    runtime::ThreadSettings s;
+    s.haptic_rate = def->hapticRate;
+    s.local_rate = def->localRate;
+    s.global_rate = def->globalRate;
+    s.cores[0] = def->hapticCore;
+    s.cores[1] = def->localCore;
+    s.cores[2] = def->globalCore;
+    s.max_contacts = def->maxContacts;
+    s.stale_after = def->staleAfter;
+    s.max_force_rate = def->maxForceRate;
+    s.max_torque_rate = def->maxTorqueRate;
+    s.trust_distance = def->trustDistance;
+    Status status;
+    if (!w.start_threads(s, status)) fail(PROX_ERROR_INVALID_ARGUMENT, "def: " + status.message());
+  });
+}
+
+proxResult proxWorld_StopThreads(proxWorldId world) {
+  return guard("proxWorld_StopThreads", [&] { world_of(world).stop_threads(); });
+}
+
+proxResult proxWorld_GetThreadStats(proxWorldId world, proxThread thread, proxThreadStats* stats) {
+  return guard("proxWorld_GetThreadStats", [&] {
+    need(stats, "stats");
+    *stats = proxThreadStats{};
+    stats->pinnedCore = -1;
+    const runtime::World& w = world_of(world);
+    if (thread != PROX_THREAD_HAPTIC && thread != PROX_THREAD_LOCAL && thread != PROX_THREAD_GLOBAL)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "thread is not a proxThread");
+    const runtime::Threads* t = w.threads();
+    if (!t) return;  // never started: all zero
+    const auto role = static_cast<runtime::Role>(thread);
+    const runtime::LoopSummary s = t->loop_summary(role);
+    stats->running = w.running() ? 1 : 0;
+    stats->pinnedCore = t->pinned_core(role);
+    stats->targetRate = s.target_rate;
+    stats->achievedRate = s.achieved_rate;
+    stats->periodP50 = s.period_p50;
+    stats->periodP99 = s.period_p99;
+    stats->periodMax = s.period_max;
+    stats->updateP50 = s.update_p50;
+    stats->updateP99 = s.update_p99;
+    stats->updateMax = s.update_max;
+    stats->updates = s.updates;
+    stats->overruns = s.overruns;
+  });
+}
+
+proxResult proxWorld_GetSafetyStats(proxWorldId world, proxSafetyStats* stats) {
+  return guard("proxWorld_GetSafetyStats", [&] {
+    need(stats, "stats");
+    *stats = proxSafetyStats{};
+    const runtime::World& w = world_of(world);
+    if (!w.threads()) return;
+    const runtime::HapticCounters c = w.threads()->haptic_counters();
+    *stats = {c.invalid_poses, c.stale_ticks,    c.untrusted_ticks,
+              c.limited_ticks, c.torn_snapshots, c.dropped_contacts};
   });
 }
 
