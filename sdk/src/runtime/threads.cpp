@@ -304,7 +304,7 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
   for (const LocalPair& lp : tool.local_pairs)
     for (const LmdPair& p : lp.lmds) scratch.push_back(&p);
   ContactSnapshot& s = tool.snapshots.back();
-  const std::size_t capacity = s.contacts.capacity();
+  const auto capacity = static_cast<std::size_t>(settings_.max_contacts);  // <= the reserved storage
   if (scratch.size() > capacity) {
     std::nth_element(scratch.begin(), scratch.begin() + static_cast<std::ptrdiff_t>(capacity), scratch.end(),
                      [](const LmdPair* a, const LmdPair* b) { return a->distance < b->distance; });
