@@ -38,6 +38,18 @@ struct StepStats {
   int contacts = 0;
   long candidates = 0;
   double seconds = 0.0;
+  // Summed over the pairs searched: the global searches and the reduction
+  // passes that follow them.
+  GlobalSearchStats search;
+  double reduction_seconds = 0.0;
+  std::uint64_t reduction_cache_hits = 0;
+};
+
+// What the last track() did, summed over the pairs tracked.
+struct TrackStats {
+  int pairs = 0;
+  LocalTrackingStats local;
+  double seconds = 0.0;
 };
 
 class World {
@@ -50,6 +62,7 @@ class World {
   // Fails (false) while bodies use the mesh.
   bool destroy_mesh(Handle h, Status& status);
   const Mesh& mesh(Handle h) const { return meshes_[h.index].data->mesh; }
+  const Snch& snch(Handle h) const { return *meshes_[h.index].data->snch; }
 
   // Bodies.
   Handle create_body(Handle mesh, BodyType type, const Pose& pose, const Vec3& reference_point);
@@ -65,9 +78,22 @@ class World {
   const std::vector<Contact>& contacts(Handle tool) const { return bodies_[tool.index].contacts; }
   const Wrench& wrench(Handle tool) const { return bodies_[tool.index].wrench; }
   const StepStats& stats() const { return stats_; }
+  // Local tracking alone: every tool's contacts from the last step carried
+  // to the current poses by the pair's tracker (what the local thread does
+  // between global searches), and the wrenches recomputed. Pairs the last
+  // step did not keep are not tracked; no new pair is found.
+  void track();
+  const TrackStats& track_stats() const { return track_stats_; }
   // The intersection polylines of a tool with every body whose box meets
-  // its box, at the current poses; computed on each call.
-  void intersections(Handle tool, std::vector<std::pair<std::uint32_t, Polyline>>& out) const;
+  // its box, at the current poses; computed on each call. The call's
+  // figures are kept with the tool.
+  void intersections(Handle tool, std::vector<std::pair<std::uint32_t, Polyline>>& out);
+  const PolylineStats& intersection_stats(Handle tool) const {
+    return bodies_[tool.index].intersection_stats;
+  }
+  // The exact minimum distance between two bodies at their current poses (0
+  // when they intersect); +infinity when they are farther apart than `bound`.
+  double distance(Handle a, Handle b, double bound) const;
   int body_count() const;
   int tool_count() const;
 
@@ -89,9 +115,10 @@ class World {
     BodyType type = BodyType::Static;
     Pose pose;
     Vec3 reference_point{0.0};
-    std::uint64_t pose_version = 0;  // bumped by every set_pose
-    std::vector<Contact> contacts;   // tools: after the last step
-    Wrench wrench;                   // tools: after the last step
+    std::uint64_t pose_version = 0;    // bumped by every set_pose
+    std::vector<Contact> contacts;     // tools: after the last step
+    Wrench wrench;                     // tools: after the last step
+    PolylineStats intersection_stats;  // tools: of the last intersections() call
   };
   // What a tool-body pair keeps between steps.
   struct PairSlot {
@@ -109,6 +136,7 @@ class World {
   std::vector<BodySlot> bodies_;
   std::unordered_map<std::uint64_t, PairSlot> pairs_;
   StepStats stats_;
+  TrackStats track_stats_;
 };
 
 }  // namespace prox::runtime
