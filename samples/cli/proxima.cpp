@@ -133,25 +133,27 @@ class Scene {
     def.cutoff = settings.cutoff;
     def.force = settings.force;
     check(proxCreateWorld(&def, &world_));
-    mesh_a_ = load(path_a, nullptr);
-    mesh_b_ = path_b == path_a ? mesh_a_ : load(path_b, nullptr);
-    proxBodyDef body = proxDefaultBodyDef();
-    body.mesh = mesh_a_;
-    body.pose = pose_a;
-    check(proxWorld_CreateBody(world_, &body, &a_));
-    proxMeshInfo info;
-    check(proxMesh_GetInfo(mesh_b_, &info));
-    body.mesh = mesh_b_;
-    body.type = PROX_BODY_TOOL;
-    body.pose = pose_b;
-    body.referencePoint = centre(info);
-    check(proxWorld_CreateBody(world_, &body, &b_));
+    destroy_on_failure([&] {
+      mesh_a_ = load(path_a, nullptr);
+      mesh_b_ = path_b == path_a ? mesh_a_ : load(path_b, nullptr);
+      proxBodyDef body = proxDefaultBodyDef();
+      body.mesh = mesh_a_;
+      body.pose = pose_a;
+      check(proxWorld_CreateBody(world_, &body, &a_));
+      proxMeshInfo info;
+      check(proxMesh_GetInfo(mesh_b_, &info));
+      body.mesh = mesh_b_;
+      body.type = PROX_BODY_TOOL;
+      body.pose = pose_b;
+      body.referencePoint = centre(info);
+      check(proxWorld_CreateBody(world_, &body, &b_));
+    });
   }
   // A world holding only one mesh, for `info`.
   explicit Scene(const std::string& path, double* load_seconds) {
     const proxWorldDef def = proxDefaultWorldDef();
     check(proxCreateWorld(&def, &world_));
-    mesh_a_ = load(path, load_seconds);
+    destroy_on_failure([&] { mesh_a_ = load(path, load_seconds); });
   }
   ~Scene() {
     if (proxWorld_IsValid(world_)) proxDestroyWorld(world_);
@@ -180,6 +182,16 @@ class Scene {
   }
 
  private:
+  // A constructor that throws runs no destructor: the world goes first.
+  template <typename F>
+  void destroy_on_failure(F&& build) {
+    try {
+      build();
+    } catch (...) {
+      proxDestroyWorld(world_);
+      throw;
+    }
+  }
   proxMeshId load(const std::string& path, double* seconds) {
     const auto start = std::chrono::steady_clock::now();
     proxMeshId mesh{};

@@ -120,10 +120,9 @@ typedef struct proxPose {
 /* ---- world ----------------------------------------------------------------- */
 
 typedef enum proxMethod {
-  PROX_METHOD_PRECISE = 0,  /* the improved method: exact distances, visibility pre-test, reduction */
-  PROX_METHOD_ORIGINAL = 1, /* the Johnson-Cohen baseline: 7 x 7 feature points */
-  PROX_METHOD_REFERENCE =
-      2, /* the brute-force truth: every triangle pair; slow, for tests and error measurement */
+  PROX_METHOD_PRECISE = 0,   /* the improved method: exact distances, visibility pre-test, reduction */
+  PROX_METHOD_ORIGINAL = 1,  /* the Johnson-Cohen baseline: 7 x 7 feature points */
+  PROX_METHOD_REFERENCE = 2, /* the brute-force truth: every triangle pair; slow, for tests */
   PROX_METHOD_FORCE32 = 0x7FFFFFFF
 } proxMethod;
 
@@ -293,8 +292,7 @@ PROX_API proxResult proxWorld_GetStats(proxWorldId world, proxWorldStats* stats)
  * and the exact minimum distance between two bodies. */
 
 typedef enum proxForcePreset {
-  PROX_FORCE_PRESET_HARD =
-      0, /* exponential; safety 0.3 mm, decay 0.3 mm, cutoff 5 mm (proxDefaultWorldDef's) */
+  PROX_FORCE_PRESET_HARD = 0, /* exponential; safety 0.3 mm, decay 0.3 mm, cutoff 5 mm: the default */
   PROX_FORCE_PRESET_SOFT = 1, /* linear; safety 2 mm, cutoff 10 mm */
   PROX_FORCE_PRESET_FORCE32 = 0x7FFFFFFF
 } proxForcePreset;
