@@ -10,18 +10,12 @@
 // Poses are world poses of the meshes as loaded (quaternion w first); lengths
 // are in the meshes' units (metres for the shared assets). docs/cli.md has
 // the details and the JSON layout.
-#include "contact/force.h"
-#include "contact/polylines.h"
-#include "contact/proximity.h"
-#include "io/obj.h"
-#if PROX_WITH_GLTF
-#include "io/gltf.h"
-#endif
+//
+// A customer of the SDK like any other: it sees only the C API
+// (<proxima/proxima.h>, libproxima.so) and the samples' own utilities.
+#include <proxima/proxima.h>
+
 #include "common/json_writer.h"
-
-#include <proxima/version.h>
-
-#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -33,10 +27,10 @@
 #include <string>
 #include <vector>
 
-namespace prox::cli {
+namespace proxcli {
 namespace {
 
-using Json = JsonWriter;
+using Json = prox::JsonWriter;
 
 const char* kUsage =
     "usage:\n"
@@ -55,6 +49,19 @@ struct UserError {
 
 [[noreturn]] void fail(const std::string& message) { throw UserError{message}; }
 
+// The library's message for the last failed call, without the function name
+// it starts with ("proxWorld_LoadMesh: x.obj: cannot read" -> "x.obj: cannot
+// read"): the user asked for a file, not a function.
+void check(proxResult r) {
+  if (r == PROX_SUCCESS) return;
+  std::string message = proxGetLastError();
+  const auto colon = message.find(": ");
+  if (message.rfind("prox", 0) == 0 && colon != std::string::npos && message.find(' ') == colon + 1)
+    message = message.substr(colon + 2);
+  if (message.empty()) message = proxResultString(r);
+  fail(message);
+}
+
 double parse_number(const std::string& text, const char* what) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
@@ -63,55 +70,144 @@ double parse_number(const std::string& text, const char* what) {
   return v;
 }
 
-struct Model {
-  std::string path;
-  Mesh mesh;
-  std::unique_ptr<Snch> snch;
-  double load_seconds = 0.0;
-};
+// ---- small vector helpers on the C API's types ---------------------------------
 
-std::string extension(const std::string& path) {
-  const auto dot = path.find_last_of('.');
-  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
+proxVec3 sub(const proxVec3& a, const proxVec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+double length(const proxVec3& v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
+proxVec3 centre(const proxMeshInfo& info) {
+  return {0.5 * (info.boundsMin.x + info.boundsMax.x), 0.5 * (info.boundsMin.y + info.boundsMax.y),
+          0.5 * (info.boundsMin.z + info.boundsMax.z)};
+}
+proxPose identity() { return {{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}}; }
+proxPose translation(double x) { return {{x, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}}; }
+
+const char* method_name(proxMethod m) {
+  switch (m) {
+    case PROX_METHOD_PRECISE:
+      return "precise";
+    case PROX_METHOD_ORIGINAL:
+      return "original";
+    case PROX_METHOD_REFERENCE:
+      return "reference";
+    default:
+      return "unknown";
+  }
 }
 
-std::shared_ptr<Model> load(const std::string& path) {
-  const auto start = std::chrono::steady_clock::now();
-  auto model = std::make_shared<Model>();
-  model->path = path;
-  const std::string ext = extension(path);
-  std::vector<double> positions;
-  std::vector<std::uint32_t> indices;
-  if (ext == "obj") {
-    io::ObjData obj;
-    const Status s = io::read_obj(path, obj);
-    if (!s) fail(s.message());
-    positions = std::move(obj.positions);
-    indices = std::move(obj.indices);
+const char* feature_name(int32_t kind) {
+  switch (kind) {
+    case 0:
+      return "vertex";
+    case 1:
+      return "edge";
+    case 2:
+      return "face";
+    default:
+      return "unknown";
   }
-#if PROX_WITH_GLTF
-  else if (ext == "gltf" || ext == "glb") {
-    // The whole default scene as one mesh, node transforms applied.
-    std::vector<io::GltfMesh> scene;
-    const Status s = io::load_gltf(path, io::GltfLoadOptions{}, scene);
-    if (!s) fail(s.message());
-    positions = std::move(scene.front().positions);
-    indices = std::move(scene.front().indices);
+}
+
+// ---- a world of two meshes: A fixed, B held --------------------------------------
+
+// The settings a command runs with: the method, the cutoff and the force.
+struct Settings {
+  proxMethod method = PROX_METHOD_PRECISE;
+  double cutoff = 0.0;
+  proxForceSettings force{};
+};
+
+Settings preset(proxForcePreset p) {
+  Settings s;
+  check(proxGetForcePreset(p, &s.force, &s.cutoff));
+  return s;
+}
+
+// One world: mesh A as a static body, mesh B (the same mesh when the paths
+// are equal) as the tool, torques about B's bounding-box centre.
+class Scene {
+ public:
+  Scene(const Settings& settings, const std::string& path_a, const std::string& path_b,
+        const proxPose& pose_a, const proxPose& pose_b) {
+    proxWorldDef def = proxDefaultWorldDef();
+    def.method = settings.method;
+    def.cutoff = settings.cutoff;
+    def.force = settings.force;
+    check(proxCreateWorld(&def, &world_));
+    destroy_on_failure([&] {
+      mesh_a_ = load(path_a, nullptr);
+      mesh_b_ = path_b == path_a ? mesh_a_ : load(path_b, nullptr);
+      proxBodyDef body = proxDefaultBodyDef();
+      body.mesh = mesh_a_;
+      body.pose = pose_a;
+      check(proxWorld_CreateBody(world_, &body, &a_));
+      proxMeshInfo info;
+      check(proxMesh_GetInfo(mesh_b_, &info));
+      body.mesh = mesh_b_;
+      body.type = PROX_BODY_TOOL;
+      body.pose = pose_b;
+      body.referencePoint = centre(info);
+      check(proxWorld_CreateBody(world_, &body, &b_));
+    });
   }
-#endif
-  else {
-    fail(path + ": unsupported file type '." + ext + "' (.obj, .gltf and .glb are read)");
+  // A world holding only one mesh, for `info`.
+  explicit Scene(const std::string& path, double* load_seconds) {
+    const proxWorldDef def = proxDefaultWorldDef();
+    check(proxCreateWorld(&def, &world_));
+    destroy_on_failure([&] { mesh_a_ = load(path, load_seconds); });
   }
-  Status s;
-  const MeshInput input{positions.data(), static_cast<std::uint32_t>(positions.size() / 3), indices.data(),
-                        static_cast<std::uint32_t>(indices.size() / 3)};
-  model->mesh = Mesh::build(input, s);
-  if (!s) fail(path + ": " + s.message());
-  model->load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  model->snch = std::make_unique<Snch>(model->mesh);
-  return model;
+  ~Scene() {
+    if (proxWorld_IsValid(world_)) proxDestroyWorld(world_);
+  }
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  proxWorldId world() const { return world_; }
+  proxMeshId mesh_a() const { return mesh_a_; }
+  proxMeshId mesh_b() const { return mesh_b_; }
+  proxBodyId a() const { return a_; }
+  proxBodyId b() const { return b_; }
+
+  std::vector<proxContact> contacts() const {
+    int32_t count = 0;
+    const proxResult r = proxBody_GetContacts(b_, nullptr, 0, &count);
+    if (r != PROX_ERROR_CAPACITY) check(r);
+    std::vector<proxContact> out(static_cast<std::size_t>(count));
+    if (count > 0) check(proxBody_GetContacts(b_, out.data(), count, &count));
+    return out;
+  }
+  proxWrench wrench() const {
+    proxWrench w;
+    check(proxBody_GetWrench(b_, &w));
+    return w;
+  }
+
+ private:
+  // A constructor that throws runs no destructor: the world goes first.
+  template <typename F>
+  void destroy_on_failure(F&& build) {
+    try {
+      build();
+    } catch (...) {
+      proxDestroyWorld(world_);
+      throw;
+    }
+  }
+  proxMeshId load(const std::string& path, double* seconds) {
+    const auto start = std::chrono::steady_clock::now();
+    proxMeshId mesh{};
+    check(proxWorld_LoadMesh(world_, path.c_str(), &mesh));
+    if (seconds) *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return mesh;
+  }
+  proxWorldId world_{};
+  proxMeshId mesh_a_{}, mesh_b_{};
+  proxBodyId a_{}, b_{};
+};
+
+double min_distance(const std::vector<proxContact>& contacts) {
+  double d = -1.0;  // none within the cutoff
+  for (const proxContact& c : contacts) d = d < 0.0 ? c.distance : std::min(d, c.distance);
+  return d;
 }
 
 std::string default_asset(const char* name) {
@@ -129,12 +225,12 @@ class Args {
     if (empty()) fail(std::string("missing ") + what);
     return args_[i_++];
   }
-  Pose pose(const char* option) {
+  proxPose pose(const char* option) {
     double v[7];
     for (double& x : v) x = parse_number(next(option), option);
     if (v[3] == 0.0 && v[4] == 0.0 && v[5] == 0.0 && v[6] == 0.0)
       fail(std::string(option) + ": the quaternion (qw qx qy qz) is zero");
-    return Pose::from_quaternion(Vec3(v[0], v[1], v[2]), v[3], v[4], v[5], v[6]);
+    return {{v[0], v[1], v[2]}, {v[3], v[4], v[5], v[6]}};  // the library normalises it
   }
 
  private:
@@ -142,16 +238,16 @@ class Args {
   std::size_t i_ = 0;
 };
 
-Method parse_method(const std::string& s) {
-  if (s == "precise") return Method::Precise;
-  if (s == "original") return Method::Original;
-  if (s == "reference") return Method::Reference;
+proxMethod parse_method(const std::string& s) {
+  if (s == "precise") return PROX_METHOD_PRECISE;
+  if (s == "original") return PROX_METHOD_ORIGINAL;
+  if (s == "reference") return PROX_METHOD_REFERENCE;
   fail("--method: '" + s + "' is not precise, original or reference");
 }
 
-ForceSettings parse_force(const std::string& s) {
-  if (s == "hard") return hard_force_settings();
-  if (s == "soft") return soft_force_settings();
+Settings parse_force(const std::string& s) {
+  if (s == "hard") return preset(PROX_FORCE_PRESET_HARD);
+  if (s == "soft") return preset(PROX_FORCE_PRESET_SOFT);
   fail("--force: '" + s + "' is not hard or soft");
 }
 
@@ -167,24 +263,27 @@ void write_file(const std::string& path, const std::string& text) {
 int info(Args& args) {
   const std::string path = args.next("FILE");
   if (!args.empty()) fail("info: unexpected argument '" + args.peek() + "'");
-  const auto model = load(path);
-  const MeshStats& s = model->mesh.stats();
-  const Aabb& box = model->mesh.bounds();
-  const SnchStats& t = model->snch->stats();
+  double seconds = 0.0;
+  const Scene scene(path, &seconds);
+  proxMeshInfo m;
+  proxMeshStats t;
+  check(proxMesh_GetInfo(scene.mesh_a(), &m));
+  check(proxMesh_GetStats(scene.mesh_a(), &t));
+  const proxVec3 &lo = m.boundsMin, &hi = m.boundsMax;
   std::printf("%s\n", path.c_str());
-  std::printf("  triangles        %u (of %u in the file; %u dropped: they repeat a vertex)\n", s.triangles,
-              s.input_triangles, s.dropped_triangles);
-  std::printf("  vertices         %u welded (of %u in the file)\n", s.vertices, s.input_vertices);
-  std::printf("  zero-area        %u triangles (kept)\n", s.zero_area_triangles);
-  std::printf("  boundary edges   %u\n", s.boundary_edges);
-  std::printf("  non-manifold     %u edges\n", s.nonmanifold_edges);
-  std::printf("  bounding box     [%.6g, %.6g, %.6g] .. [%.6g, %.6g, %.6g] (size %.6g x %.6g x %.6g)\n",
-              box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z, box.max.x - box.min.x,
-              box.max.y - box.min.y, box.max.z - box.min.z);
-  std::printf("  load             %.1f ms\n", model->load_seconds * 1e3);
+  std::printf("  triangles        %u (of %u in the file; %u dropped: they repeat a vertex)\n",
+              m.triangleCount, t.inputTriangles, m.droppedTriangles);
+  std::printf("  vertices         %u welded (of %u in the file)\n", m.vertexCount, t.inputVertices);
+  std::printf("  zero-area        %u triangles (kept)\n", t.zeroAreaTriangles);
+  std::printf("  boundary edges   %u\n", m.boundaryEdges);
+  std::printf("  non-manifold     %u edges\n", m.nonManifoldEdges);
+  std::printf("  bounding box     [%.6g, %.6g, %.6g] .. [%.6g, %.6g, %.6g] (size %.6g x %.6g x %.6g)\n", lo.x,
+              lo.y, lo.z, hi.x, hi.y, hi.z, hi.x - lo.x, hi.y - lo.y, hi.z - lo.z);
+  // Reading, welding and topology: the load call less the hierarchy's build.
+  std::printf("  load             %.1f ms\n", std::max(0.0, seconds - t.hierarchySeconds) * 1e3);
   std::printf("  SNCH             %u nodes, depth %u, %u unbounded leaf cones, built in %.1f ms, %.1f MiB\n",
-              t.nodes, t.depth, t.unbounded_leaves, t.build_seconds * 1e3,
-              double(t.memory_bytes) / (1 << 20));
+              t.hierarchyNodes, t.hierarchyDepth, t.unboundedLeafCones, t.hierarchySeconds * 1e3,
+              static_cast<double>(t.hierarchyBytes) / (1 << 20));
   return 0;
 }
 
@@ -192,10 +291,11 @@ int info(Args& args) {
 
 int lmd(Args& args) {
   const std::string path_a = args.next("mesh A"), path_b = args.next("mesh B");
-  Pose pose_a, pose_b;
+  proxPose pose_a = identity(), pose_b = identity();
   double cutoff = 0.005;
-  Method method = Method::Precise;
-  ForceSettings force = hard_force_settings();
+  proxMethod method = PROX_METHOD_PRECISE;
+  Settings settings = preset(PROX_FORCE_PRESET_HARD);
+  std::string force_name = "hard";
   std::string json_path;
   while (!args.empty()) {
     const std::string opt = args.next("option");
@@ -208,79 +308,86 @@ int lmd(Args& args) {
     else if (opt == "--method")
       method = parse_method(args.next("--method value"));
     else if (opt == "--force")
-      force = parse_force(args.next("--force value"));
+      settings = parse_force(force_name = args.next("--force value"));
     else if (opt == "--json")
       json_path = args.next("--json file");
     else
       fail("lmd: unknown option '" + opt + "'");
   }
-  if (!(cutoff >= 0.0)) fail("--cutoff must be zero or positive");
-  force.cutoff = std::max(cutoff, force.safety_distance);
-  const auto a = load(path_a);
-  const auto b = path_b == path_a ? a : load(path_b);
-  const PairQuery q{&a->mesh, a->snch.get(), pose_a, &b->mesh, b->snch.get(), pose_b, cutoff};
-  PairState state;
-  ProximityResult r;
-  find_lmds(q, method, state, r);
-  // The tool is B; its reference point is its bounding-box centre.
-  const Vec3 reference = pose_b.apply(0.5 * (b->mesh.bounds().min + b->mesh.bounds().max));
-  const Wrench w = tool_wrench(force, r.lmds, reference);
+  // The force falls from its maximum at the safety distance to zero at the
+  // cutoff, so the cutoff must lie beyond the safety distance.
+  if (!(cutoff > settings.force.safetyDistance)) {
+    char text[160];
+    std::snprintf(text, sizeof text, "--cutoff must be larger than the safety distance of --force %s (%g)",
+                  force_name.c_str(), settings.force.safetyDistance);
+    fail(text);
+  }
+  settings.method = method;
+  settings.cutoff = cutoff;
+  const Scene scene(settings, path_a, path_b, pose_a, pose_b);
+  check(proxWorld_Step(scene.world()));
+  const std::vector<proxContact> contacts = scene.contacts();
+  const proxWrench w = scene.wrench();
+  proxSearchStats r;
+  check(proxWorld_GetSearchStats(scene.world(), &r));
+  const double min_d = min_distance(contacts);
 
-  std::printf("%s LMDs between %s and %s within %g: %zu (from %u candidates)\n", method_name(method),
-              path_a.c_str(), path_b.c_str(), cutoff, r.lmds.size(), r.candidates);
-  for (const LmdPair& p : r.lmds)
-    std::printf("  tri %u - tri %u  d=%.9g  %s-%s  a=(%.6g, %.6g, %.6g) b=(%.6g, %.6g, %.6g)\n", p.tri_a,
-                p.tri_b, p.distance, feature_kind_name(p.feature_a.kind), feature_kind_name(p.feature_b.kind),
-                p.point_a.x, p.point_a.y, p.point_a.z, p.point_b.x, p.point_b.y, p.point_b.z);
-  if (r.lmds.empty())
+  std::printf("%s LMDs between %s and %s within %g: %zu (from %llu candidates)\n", method_name(method),
+              path_a.c_str(), path_b.c_str(), cutoff, contacts.size(),
+              static_cast<unsigned long long>(r.candidates));
+  for (const proxContact& c : contacts)
+    std::printf("  tri %u - tri %u  d=%.9g  %s-%s  a=(%.6g, %.6g, %.6g) b=(%.6g, %.6g, %.6g)\n",
+                c.triangleOther, c.triangleTool, c.distance, feature_name(c.featureOther),
+                feature_name(c.featureTool), c.pointOther.x, c.pointOther.y, c.pointOther.z, c.pointTool.x,
+                c.pointTool.y, c.pointTool.z);
+  if (contacts.empty())
     std::printf("  minimum distance: none within the cutoff\n");
   else
-    std::printf("  minimum distance: %.9g\n", r.min_distance);
+    std::printf("  minimum distance: %.9g\n", min_d);
   std::printf("  force on B:  (%.6g, %.6g, %.6g) N%s\n", w.force.x, w.force.y, w.force.z,
               w.clipped ? " (clipped)" : "");
   std::printf("  torque on B: (%.6g, %.6g, %.6g) N m about its box centre\n", w.torque.x, w.torque.y,
               w.torque.z);
   std::printf(
       "  search: %llu node pairs, %llu leaf pairs, %llu culled by visibility, %.3f ms; reduction %.3f ms\n",
-      static_cast<unsigned long long>(r.global.node_pairs),
-      static_cast<unsigned long long>(r.global.leaf_pairs),
-      static_cast<unsigned long long>(r.global.visibility_rejections), r.global.seconds * 1e3,
-      (r.reduction[0].seconds + r.reduction[1].seconds) * 1e3);
+      static_cast<unsigned long long>(r.nodePairs), static_cast<unsigned long long>(r.leafPairs),
+      static_cast<unsigned long long>(r.visibilityRejections), r.globalSeconds * 1e3,
+      r.reductionSeconds * 1e3);
 
   if (!json_path.empty()) {
+    auto count = [](uint64_t n) { return static_cast<long long>(n); };
     Json j;
     j.begin_object();
     // -1 when no pair is within the cutoff (the minimum is then unknown).
-    j.key("min_distance").value(r.min_distance);
+    j.key("min_distance").value(min_d);
     j.key("method").value(method_name(method));
     j.key("cutoff").value(cutoff);
     j.key("lmds").begin_array();
-    for (const LmdPair& p : r.lmds) {
+    for (const proxContact& c : contacts) {
       j.begin_object();
-      j.key("tri_a").value(static_cast<long long>(p.tri_a));
-      j.key("tri_b").value(static_cast<long long>(p.tri_b));
-      j.key("point_a").vec3(p.point_a);
-      j.key("point_b").vec3(p.point_b);
-      j.key("distance").value(p.distance);
-      j.key("feature_a").value(feature_kind_name(p.feature_a.kind));
-      j.key("feature_b").value(feature_kind_name(p.feature_b.kind));
+      j.key("tri_a").value(static_cast<long long>(c.triangleOther));
+      j.key("tri_b").value(static_cast<long long>(c.triangleTool));
+      j.key("point_a").vec3(c.pointOther);
+      j.key("point_b").vec3(c.pointTool);
+      j.key("distance").value(c.distance);
+      j.key("feature_a").value(feature_name(c.featureOther));
+      j.key("feature_b").value(feature_name(c.featureTool));
       j.end_object();
     }
     j.end_array();
     j.key("force").vec3(w.force);
     j.key("torque").vec3(w.torque);
     j.key("stats").begin_object();
-    j.key("candidates").value(static_cast<long long>(r.candidates));
-    j.key("node_pairs").value(static_cast<long long>(r.global.node_pairs));
-    j.key("leaf_pairs").value(static_cast<long long>(r.global.leaf_pairs));
-    j.key("plane_rejections").value(static_cast<long long>(r.global.plane_rejections));
-    j.key("visibility_rejections").value(static_cast<long long>(r.global.visibility_rejections));
-    j.key("normal_rejections").value(static_cast<long long>(r.global.normal_rejections));
-    j.key("distance_evaluations").value(static_cast<long long>(r.global.distance_evaluations));
-    j.key("global_ms").value(r.global.seconds * 1e3);
-    j.key("reduction_ms").value((r.reduction[0].seconds + r.reduction[1].seconds) * 1e3);
-    j.key("tracking_cache_hits")
-        .value(static_cast<long long>(r.reduction[0].cache_hits + r.reduction[1].cache_hits));
+    j.key("candidates").value(count(r.candidates));
+    j.key("node_pairs").value(count(r.nodePairs));
+    j.key("leaf_pairs").value(count(r.leafPairs));
+    j.key("plane_rejections").value(count(r.planeRejections));
+    j.key("visibility_rejections").value(count(r.visibilityRejections));
+    j.key("normal_rejections").value(count(r.normalRejections));
+    j.key("distance_evaluations").value(count(r.distanceEvaluations));
+    j.key("global_ms").value(r.globalSeconds * 1e3);
+    j.key("reduction_ms").value(r.reductionSeconds * 1e3);
+    j.key("tracking_cache_hits").value(count(r.reductionCacheHits));
     j.end_object();
     j.end_object();
     write_file(json_path, j.str() + "\n");
@@ -292,7 +399,7 @@ int lmd(Args& args) {
 
 int polylines(Args& args) {
   const std::string path_a = args.next("mesh A"), path_b = args.next("mesh B");
-  Pose pose_a, pose_b;
+  proxPose pose_a = identity(), pose_b = identity();
   std::string json_path;
   while (!args.empty()) {
     const std::string opt = args.next("option");
@@ -305,41 +412,48 @@ int polylines(Args& args) {
     else
       fail("polylines: unknown option '" + opt + "'");
   }
-  const auto a = load(path_a);
-  const auto b = path_b == path_a ? a : load(path_b);
-  const PairQuery q{&a->mesh, a->snch.get(), pose_a, &b->mesh, b->snch.get(), pose_b, 0.0};
-  std::vector<Polyline> lines;
-  PolylineStats stats;
-  intersection_polylines(q, lines, stats);
+  const Scene scene(preset(PROX_FORCE_PRESET_HARD), path_a, path_b, pose_a, pose_b);
+  // Ask the sizes, then fetch (the polylines are computed on each call).
+  int32_t point_count = 0, line_count = 0;
+  const proxResult sizes =
+      proxBody_GetIntersections(scene.b(), nullptr, 0, &point_count, nullptr, 0, &line_count);
+  if (sizes != PROX_ERROR_CAPACITY) check(sizes);
+  std::vector<proxVec3> points(static_cast<std::size_t>(point_count));
+  std::vector<proxPolylineInfo> lines(static_cast<std::size_t>(line_count));
+  check(proxBody_GetIntersections(scene.b(), points.data(), point_count, &point_count, lines.data(),
+                                  line_count, &line_count));
+  proxIntersectionStats stats;
+  check(proxBody_GetIntersectionStats(scene.b(), &stats));
   double total = 0.0;
-  for (const Polyline& line : lines) {
+  for (const proxPolylineInfo& line : lines) {
+    const proxVec3* p = points.data() + line.firstPoint;
     double len = 0.0;
-    for (std::size_t k = 0; k + 1 < line.points.size(); ++k)
-      len += glm::length(line.points[k + 1] - line.points[k]);
-    if (line.closed) len += glm::length(line.points.front() - line.points.back());
+    for (int32_t k = 0; k + 1 < line.pointCount; ++k) len += length(sub(p[k + 1], p[k]));
+    if (line.closed && line.pointCount > 0) len += length(sub(p[0], p[line.pointCount - 1]));
     total += len;
-    std::printf("  %s polyline: %zu points, length %.9g\n", line.closed ? "closed" : "open",
-                line.points.size(), len);
+    std::printf("  %s polyline: %d points, length %.9g\n", line.closed ? "closed" : "open", line.pointCount,
+                len);
   }
   std::printf(
       "%zu polylines, total length %.9g; %llu intersecting triangle pairs (%llu coplanar, not traced), "
       "%.3f ms\n",
-      lines.size(), total, static_cast<unsigned long long>(stats.intersecting_pairs),
-      static_cast<unsigned long long>(stats.coplanar_pairs), stats.seconds * 1e3);
+      lines.size(), total, static_cast<unsigned long long>(stats.intersectingPairs),
+      static_cast<unsigned long long>(stats.coplanarPairs), stats.seconds * 1e3);
   if (!json_path.empty()) {
     Json j;
     j.begin_object();
     j.key("polylines").begin_array();
-    for (const Polyline& line : lines) {
-      j.begin_object().key("closed").value(line.closed).key("points").begin_array();
-      for (const Vec3& p : line.points) j.vec3(p);
+    for (const proxPolylineInfo& line : lines) {
+      j.begin_object().key("closed").value(line.closed != 0).key("points").begin_array();
+      for (int32_t k = 0; k < line.pointCount; ++k)
+        j.vec3(points[static_cast<std::size_t>(line.firstPoint + k)]);
       j.end_array().end_object();
     }
     j.end_array();
     j.key("total_length").value(total);
     j.key("stats").begin_object();
-    j.key("intersecting_pairs").value(static_cast<long long>(stats.intersecting_pairs));
-    j.key("coplanar_pairs").value(static_cast<long long>(stats.coplanar_pairs));
+    j.key("intersecting_pairs").value(static_cast<long long>(stats.intersectingPairs));
+    j.key("coplanar_pairs").value(static_cast<long long>(stats.coplanarPairs));
     j.key("segments").value(static_cast<long long>(stats.segments));
     j.key("ms").value(stats.seconds * 1e3);
     j.end_object();
@@ -354,39 +468,50 @@ int polylines(Args& args) {
 struct Step {
   int index = 0;
   double x = 0.0;
-  Method method = Method::Precise;
+  proxMethod method = PROX_METHOD_PRECISE;
   std::size_t candidates = 0, lmds = 0;
   double min_distance = -1.0;
-  Wrench wrench;
+  proxWrench wrench{};
   double global_ms = 0.0, reduction_ms = 0.0, local_ms = 0.0;
 };
 
 double percentile(std::vector<double> v, double p) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
-  return v[std::min(v.size() - 1, static_cast<std::size_t>(p * double(v.size() - 1) + 0.5))];
+  return v[std::min(v.size() - 1, static_cast<std::size_t>(p * static_cast<double>(v.size() - 1) + 0.5))];
+}
+
+double diagonal(proxMeshId mesh) {
+  proxMeshInfo info;
+  check(proxMesh_GetInfo(mesh, &info));
+  return length(sub(info.boundsMax, info.boundsMin));
 }
 
 // Path T of docs/cli.md: B translated along +x from where the minimum
-// distance to A is `far` to where it is `near`, linear in x.
-double x_at_gap(const Model& a, const Model& b, double gap) {
-  double lo = 0.0, hi = glm::length(a.mesh.bounds().max - a.mesh.bounds().min) +
-                        glm::length(b.mesh.bounds().max - b.mesh.bounds().min) + gap;
+// distance to A is `far` to where it is `near`, linear in x. Bisection on the
+// exact minimum distance; leaves B where it was.
+double x_at_gap(const Scene& scene, double gap) {
+  proxPose before;
+  check(proxBody_GetPose(scene.b(), &before));
+  double lo = 0.0, hi = diagonal(scene.mesh_a()) + diagonal(scene.mesh_b()) + gap;
   for (int i = 0; i < 100 && hi - lo > 1e-12 * hi; ++i) {
     const double mid = 0.5 * (lo + hi);
-    const Pose pb{glm::dmat3(1.0), Vec3(mid, 0.0, 0.0)};
-    const PairQuery q{&a.mesh, a.snch.get(), Pose{}, &b.mesh, b.snch.get(), pb, 0.0};
-    (any_closer_than(q, gap) ? lo : hi) = mid;
+    const proxPose pb = translation(mid);
+    check(proxBody_SetPose(scene.b(), &pb));
+    double d = -1.0;
+    check(proxBody_GetDistance(scene.a(), scene.b(), gap, &d));
+    (d >= 0.0 && d < gap ? lo : hi) = mid;
   }
+  check(proxBody_SetPose(scene.b(), &before));
   return hi;
 }
 
 // A poses file: one pose of B per line, "tx ty tz qw qx qy qz"; blank lines
 // and lines starting with # are skipped.
-std::vector<Pose> read_poses(const std::string& path) {
+std::vector<proxPose> read_poses(const std::string& path) {
   FILE* f = std::fopen(path.c_str(), "r");
   if (!f) fail(path + ": cannot read");
-  std::vector<Pose> poses;
+  std::vector<proxPose> poses;
   char line[1024];
   int number = 0;
   while (std::fgets(line, sizeof line, f)) {
@@ -417,7 +542,7 @@ std::vector<Pose> read_poses(const std::string& path) {
       std::fclose(f);
       fail(where + ": the quaternion is zero");
     }
-    poses.push_back(Pose::from_quaternion(Vec3(v[0], v[1], v[2]), v[3], v[4], v[5], v[6]));
+    poses.push_back({{v[0], v[1], v[2]}, {v[3], v[4], v[5], v[6]}});
   }
   std::fclose(f);
   if (poses.size() < 2) fail(path + ": a path needs at least 2 poses");
@@ -428,8 +553,8 @@ int path(Args& args) {
   std::string path_a = default_asset("bunny.obj"), path_b;
   int steps = 1000;
   std::string poses_path;
-  std::vector<Method> methods = {Method::Precise, Method::Original};
-  ForceSettings force = hard_force_settings();
+  std::vector<proxMethod> methods = {PROX_METHOD_PRECISE, PROX_METHOD_ORIGINAL};
+  Settings settings = preset(PROX_FORCE_PRESET_HARD);
   std::string csv_path = "proxima-path.csv";
   if (!args.empty() && args.peek().rfind("--", 0) != 0) {
     path_a = args.next("mesh A");
@@ -443,10 +568,10 @@ int path(Args& args) {
       steps = static_cast<int>(s);
     } else if (opt == "--method") {
       const std::string m = args.next("--method value");
-      methods = m == "both" ? std::vector<Method>{Method::Precise, Method::Original}
-                            : std::vector<Method>{parse_method(m)};
+      methods = m == "both" ? std::vector<proxMethod>{PROX_METHOD_PRECISE, PROX_METHOD_ORIGINAL}
+                            : std::vector<proxMethod>{parse_method(m)};
     } else if (opt == "--force") {
-      force = parse_force(args.next("--force value"));
+      settings = parse_force(args.next("--force value"));
     } else if (opt == "--csv") {
       csv_path = args.next("--csv file");
     } else if (opt == "--poses") {
@@ -455,52 +580,60 @@ int path(Args& args) {
       fail("path: unknown option '" + opt + "'");
     }
   }
-  const auto a = load(path_a);
-  const auto b = path_b.empty() || path_b == path_a ? a : load(path_b);
-  const double cutoff = force.cutoff;
-  std::vector<Pose> poses;
+  if (path_b.empty()) path_b = path_a;
+  const double cutoff = settings.cutoff;
+  // A world per method, each pair's memory starting afresh; the first also
+  // finds the ends of path T.
+  auto scene_for = [&](proxMethod method) {
+    Settings with_method = settings;
+    with_method.method = method;
+    return std::make_unique<Scene>(with_method, path_a, path_b, identity(), identity());
+  };
+  std::unique_ptr<Scene> scene = scene_for(methods.front());
+  std::vector<proxPose> poses;
   if (!poses_path.empty()) {
     poses = read_poses(poses_path);
     std::printf("path from %s: %zu poses of %s against %s, cutoff %.3g m\n", poses_path.c_str(), poses.size(),
-                b->path.c_str(), a->path.c_str(), cutoff);
+                path_b.c_str(), path_a.c_str(), cutoff);
   } else {
     const double far = 0.05, near = 0.0005;
-    const double x0 = x_at_gap(*a, *b, far), x1 = x_at_gap(*a, *b, near);
-    for (int i = 0; i < steps; ++i)
-      poses.push_back({glm::dmat3(1.0), Vec3(x0 + (x1 - x0) * i / (steps - 1), 0, 0)});
+    const double x0 = x_at_gap(*scene, far), x1 = x_at_gap(*scene, near);
+    for (int i = 0; i < steps; ++i) poses.push_back(translation(x0 + (x1 - x0) * i / (steps - 1)));
     std::printf(
         "path T: %s held and moved along +x against %s, %d poses from %.3g m to %.3g m apart "
         "(x %.6g .. %.6g), cutoff %.3g m\n",
-        b->path.c_str(), a->path.c_str(), steps, far, near, x0, x1, cutoff);
+        path_b.c_str(), path_a.c_str(), steps, far, near, x0, x1, cutoff);
   }
 
   std::vector<Step> rows;
-  for (const Method method : methods) {
-    PairState state;
-    std::vector<LmdPair> tracked;
+  for (const proxMethod method : methods) {
+    if (!scene) scene = scene_for(method);
     for (std::size_t i = 0; i < poses.size(); ++i) {
       Step s;
       s.index = static_cast<int>(i);
       s.method = method;
-      const Pose& pb = poses[i];
-      s.x = pb.translation.x;
-      const PairQuery q{&a->mesh, a->snch.get(), Pose{}, &b->mesh, b->snch.get(), pb, cutoff};
+      s.x = poses[i].position.x;
+      check(proxBody_SetPose(scene->b(), &poses[i]));
       // What the local thread does between global searches: carry the last
       // set to the new pose.
-      LocalTrackingStats local;
-      (method == Method::Original ? state.original : state.precise).update(q, tracked, local);
+      check(proxWorld_Track(scene->world()));
+      proxTrackStats local;
+      check(proxWorld_GetTrackStats(scene->world(), &local));
       s.local_ms = local.seconds * 1e3;
-      ProximityResult r;
-      find_lmds(q, method, state, r);
-      s.candidates = r.candidates;
-      s.lmds = r.lmds.size();
-      s.min_distance = r.min_distance;
-      s.global_ms = r.global.seconds * 1e3;
-      s.reduction_ms = (r.reduction[0].seconds + r.reduction[1].seconds) * 1e3;
-      s.wrench = tool_wrench(force, r.lmds, pb.apply(0.5 * (b->mesh.bounds().min + b->mesh.bounds().max)));
-      tracked = r.lmds;
+      // The global search and its reduction.
+      check(proxWorld_Step(scene->world()));
+      proxSearchStats search;
+      check(proxWorld_GetSearchStats(scene->world(), &search));
+      const std::vector<proxContact> contacts = scene->contacts();
+      s.candidates = static_cast<std::size_t>(search.candidates);
+      s.lmds = contacts.size();
+      s.min_distance = min_distance(contacts);
+      s.global_ms = search.globalSeconds * 1e3;
+      s.reduction_ms = search.reductionSeconds * 1e3;
+      s.wrench = scene->wrench();
       rows.push_back(s);
     }
+    scene.reset();
   }
 
   std::string csv =
@@ -511,7 +644,7 @@ int path(Args& args) {
     std::snprintf(line, sizeof line,
                   "%d,%s,%.9g,%.9g,%zu,%zu,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.6f,%.6f,%.6f\n", s.index,
                   method_name(s.method), s.x, s.min_distance, s.candidates, s.lmds, s.wrench.force.x,
-                  s.wrench.force.y, s.wrench.force.z, glm::length(s.wrench.force), s.wrench.torque.x,
+                  s.wrench.force.y, s.wrench.force.z, length(s.wrench.force), s.wrench.torque.x,
                   s.wrench.torque.y, s.wrench.torque.z, s.global_ms, s.reduction_ms, s.local_ms);
     csv += line;
   }
@@ -519,7 +652,7 @@ int path(Args& args) {
 
   std::printf("%-9s %6s %9s %9s %10s %10s %12s %12s %12s %12s\n", "method", "steps", "contact", "max LMDs",
               "max |F| N", "max jump N", "global p50", "global p99", "local p50", "reduction");
-  for (const Method method : methods) {
+  for (const proxMethod method : methods) {
     std::vector<double> global, local;
     int contact = 0;
     std::size_t max_lmds = 0, candidates = 0, lmds = 0;
@@ -532,12 +665,13 @@ int path(Args& args) {
       contact += s.lmds > 0;
       max_lmds = std::max(max_lmds, s.lmds);
       candidates += s.candidates, lmds += s.lmds;
-      max_force = std::max(max_force, glm::length(s.wrench.force));
-      if (previous) max_jump = std::max(max_jump, glm::length(s.wrench.force - previous->wrench.force));
+      max_force = std::max(max_force, length(s.wrench.force));
+      if (previous) max_jump = std::max(max_jump, length(sub(s.wrench.force, previous->wrench.force)));
       previous = &s;
     }
     char reduction[32];
-    std::snprintf(reduction, sizeof reduction, "%.1fx", lmds ? double(candidates) / double(lmds) : 0.0);
+    std::snprintf(reduction, sizeof reduction, "%.1fx",
+                  lmds ? static_cast<double>(candidates) / static_cast<double>(lmds) : 0.0);
     std::printf("%-9s %6zu %9d %9zu %10.4f %10.4f %9.3f ms %9.3f ms %9.3f ms %12s\n", method_name(method),
                 global.size(), contact, max_lmds, max_force, max_jump, percentile(global, 0.5),
                 percentile(global, 0.99), percentile(local, 0.5), reduction);
@@ -547,10 +681,10 @@ int path(Args& args) {
 }
 
 }  // namespace
-}  // namespace prox::cli
+}  // namespace proxcli
 
 int main(int argc, char** argv) {
-  using namespace prox::cli;
+  using namespace proxcli;
   if (argc < 2) {
     std::fputs(kUsage, stderr);
     return 2;

@@ -27,6 +27,11 @@ _Static_assert(sizeof(proxSafetyStats) == 48, "proxSafetyStats");
 _Static_assert(sizeof(proxThread) == 4, "enums are 32-bit");
 _Static_assert(sizeof(proxResult) == 4, "enums are 32-bit");
 _Static_assert(sizeof(proxBodyType) == 4, "enums are 32-bit");
+_Static_assert(sizeof(proxForcePreset) == 4, "enums are 32-bit");
+_Static_assert(sizeof(proxMeshStats) == 48, "proxMeshStats");
+_Static_assert(sizeof(proxSearchStats) == 88, "proxSearchStats");
+_Static_assert(sizeof(proxTrackStats) == 48, "proxTrackStats");
+_Static_assert(sizeof(proxIntersectionStats) == 40, "proxIntersectionStats");
 
 int main(void) {
   const proxVersion v = proxGetVersion();

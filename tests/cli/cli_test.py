@@ -167,6 +167,9 @@ class CliTest(unittest.TestCase):
             (("lmd", self.tri, self.tri, "--pose-b", "0", "0", "inf", "1", "0", "0", "0"), "not finite"),
             (("lmd", self.tri, self.tri, "--pose-a", "1", "2"), "missing"),
             (("lmd", self.tri, self.tri, "--cutoff", "-1"), "--cutoff"),
+            # The force falls from its maximum at the safety distance (0.3 mm
+            # for hard) to zero at the cutoff: a cutoff inside it is refused.
+            (("lmd", self.tri, self.tri, "--cutoff", "0.0002"), "safety distance"),
             (("lmd", self.tri, self.tri, "--method", "magic"), "--method"),
             (("lmd", self.tri), "missing mesh B"),
             (("path", "--steps", "1"), "--steps"),

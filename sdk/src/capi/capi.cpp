@@ -48,6 +48,11 @@ static_assert(sizeof(proxSafetyStats) == 48, "ABI");
 static_assert(sizeof(proxResult) == 4 && sizeof(proxMethod) == 4 && sizeof(proxBodyType) == 4 &&
                   sizeof(proxThread) == 4,
               "ABI");
+static_assert(sizeof(proxForcePreset) == 4, "ABI");
+static_assert(sizeof(proxMeshStats) == 48, "ABI");
+static_assert(sizeof(proxSearchStats) == 88, "ABI");
+static_assert(sizeof(proxTrackStats) == 48, "ABI");
+static_assert(sizeof(proxIntersectionStats) == 40, "ABI");
 
 namespace {
 
@@ -220,9 +225,13 @@ ForceSettings to_force(const proxForceSettings& f, double cutoff) {
 
 proxMeshId make_mesh_id(proxWorldId world, runtime::Handle h) { return {h.index + 1, h.generation, world}; }
 
-proxMeshId add_mesh(proxWorldId world_id, runtime::World& world, const MeshInput& input) {
+// `source`: the file the data came from, named in the error when it is not
+// a valid mesh.
+proxMeshId add_mesh(proxWorldId world_id, runtime::World& world, const MeshInput& input,
+                    const std::string& source = "") {
   Status status;
   const runtime::Handle h = world.create_mesh(input, status);
+  if (!status && !source.empty()) fail(status_code(status), source + ": " + status.message());
   check(status);
   return make_mesh_id(world_id, h);
 }
@@ -355,11 +364,14 @@ proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
     if (def->apiVersion != PROX_API_VERSION)
       fail(PROX_ERROR_VERSION_MISMATCH, "def comes from API version " + std::to_string(def->apiVersion) +
                                             ", the library is " + std::to_string(PROX_API_VERSION));
-    if (def->method != PROX_METHOD_PRECISE && def->method != PROX_METHOD_ORIGINAL)
+    if (def->method != PROX_METHOD_PRECISE && def->method != PROX_METHOD_ORIGINAL &&
+        def->method != PROX_METHOD_REFERENCE)
       fail(PROX_ERROR_INVALID_ARGUMENT, "def->method is not a proxMethod");
     need_positive(def->cutoff, "def->cutoff");
     runtime::WorldSettings s;
-    s.method = def->method == PROX_METHOD_ORIGINAL ? Method::Original : Method::Precise;
+    s.method = def->method == PROX_METHOD_ORIGINAL    ? Method::Original
+               : def->method == PROX_METHOD_REFERENCE ? Method::Reference
+                                                      : Method::Precise;
     s.cutoff = def->cutoff;
     s.force = to_force(def->force, def->cutoff);
     auto w = std::make_unique<runtime::World>(s);
@@ -426,7 +438,8 @@ proxResult proxWorld_LoadMesh(proxWorldId world, const char* path, proxMeshId* m
       check(io::read_obj(p, obj));
       *mesh = add_mesh(world, w,
                        {obj.positions.data(), static_cast<uint32_t>(obj.positions.size() / 3),
-                        obj.indices.data(), static_cast<uint32_t>(obj.indices.size() / 3)});
+                        obj.indices.data(), static_cast<uint32_t>(obj.indices.size() / 3)},
+                       p);
       return;
     }
 #if PROX_WITH_GLTF
@@ -437,7 +450,8 @@ proxResult proxWorld_LoadMesh(proxWorldId world, const char* path, proxMeshId* m
       const io::GltfMesh& m = parts.front();
       *mesh = add_mesh(world, w,
                        {m.positions.data(), static_cast<uint32_t>(m.positions.size() / 3), m.indices.data(),
-                        static_cast<uint32_t>(m.indices.size() / 3)});
+                        static_cast<uint32_t>(m.indices.size() / 3)},
+                       p);
       return;
     }
 #endif
@@ -841,6 +855,120 @@ proxResult proxWorld_GetSafetyStats(proxWorldId world, proxSafetyStats* stats) {
     const runtime::HapticCounters c = w.threads()->haptic_counters();
     *stats = {c.invalid_poses, c.stale_ticks,    c.untrusted_ticks,
               c.limited_ticks, c.torn_snapshots, c.dropped_contacts};
+  });
+}
+
+// ---- inspection --------------------------------------------------------------------
+
+proxResult proxGetForcePreset(proxForcePreset preset, proxForceSettings* force, double* cutoff) {
+  return guard("proxGetForcePreset", [&] {
+    need(force, "force");
+    need(cutoff, "cutoff");
+    ForceSettings f;
+    switch (preset) {
+      case PROX_FORCE_PRESET_HARD:
+        f = hard_force_settings();
+        break;
+      case PROX_FORCE_PRESET_SOFT:
+        f = soft_force_settings();
+        break;
+      default:
+        fail(PROX_ERROR_INVALID_ARGUMENT, "preset is not a proxForcePreset");
+    }
+    *force = {f.curve == ForceCurve::Linear ? PROX_FORCE_LINEAR : PROX_FORCE_EXPONENTIAL, f.max_force,
+              f.max_torque, f.safety_distance, f.decay_length};
+    *cutoff = f.cutoff;
+  });
+}
+
+proxResult proxMesh_GetStats(proxMeshId mesh, proxMeshStats* stats) {
+  return guard("proxMesh_GetStats", [&] {
+    need(stats, "stats");
+    runtime::World* w = nullptr;
+    const runtime::Handle h = mesh_of(mesh, w);
+    const MeshStats& m = w->mesh(h).stats();
+    const SnchStats& t = w->snch(h).stats();
+    *stats = proxMeshStats{};
+    stats->inputVertices = m.input_vertices;
+    stats->inputTriangles = m.input_triangles;
+    stats->zeroAreaTriangles = m.zero_area_triangles;
+    stats->hierarchyNodes = t.nodes;
+    stats->hierarchyLeaves = t.leaves;
+    stats->hierarchyDepth = t.depth;
+    stats->unboundedLeafCones = t.unbounded_leaves;
+    stats->hierarchyBytes = t.memory_bytes;
+    stats->hierarchySeconds = t.build_seconds;
+  });
+}
+
+proxResult proxWorld_GetSearchStats(proxWorldId world, proxSearchStats* stats) {
+  return guard("proxWorld_GetSearchStats", [&] {
+    need(stats, "stats");
+    const runtime::StepStats s = world_of(world).stats();
+    *stats = proxSearchStats{};
+    stats->pairsSearched = s.pairs_searched;
+    stats->nodePairs = s.search.node_pairs;
+    stats->leafPairs = s.search.leaf_pairs;
+    stats->planeRejections = s.search.plane_rejections;
+    stats->visibilityRejections = s.search.visibility_rejections;
+    stats->normalRejections = s.search.normal_rejections;
+    stats->distanceEvaluations = s.search.distance_evaluations;
+    stats->candidates = static_cast<uint64_t>(s.candidates);
+    stats->reductionCacheHits = s.reduction_cache_hits;
+    stats->globalSeconds = s.search.seconds;
+    stats->reductionSeconds = s.reduction_seconds;
+  });
+}
+
+proxResult proxWorld_Track(proxWorldId world) {
+  return guard("proxWorld_Track", [&] {
+    runtime::World& w = world_of(world);
+    need_stopped(w);
+    w.track();
+  });
+}
+
+proxResult proxWorld_GetTrackStats(proxWorldId world, proxTrackStats* stats) {
+  return guard("proxWorld_GetTrackStats", [&] {
+    need(stats, "stats");
+    const runtime::TrackStats& s = world_of(world).track_stats();
+    *stats = proxTrackStats{};
+    stats->pairsTracked = s.pairs;
+    stats->contactsIn = static_cast<int32_t>(s.local.pairs_in);
+    stats->contactsOut = static_cast<int32_t>(s.local.pairs_out);
+    stats->distanceEvaluations = s.local.distance_evaluations;
+    stats->cacheHits = s.local.cache_hits;
+    stats->moves = s.local.steps;
+    stats->seconds = s.seconds;
+  });
+}
+
+proxResult proxBody_GetIntersectionStats(proxBodyId tool, proxIntersectionStats* stats) {
+  return guard("proxBody_GetIntersectionStats", [&] {
+    need(stats, "stats");
+    runtime::World* w = nullptr;
+    const runtime::Handle h = tool_of(tool, w);
+    const PolylineStats& s = w->intersection_stats(h);
+    *stats = {s.triangle_pairs, s.intersecting_pairs, s.coplanar_pairs, s.segments, s.seconds};
+  });
+}
+
+proxResult proxBody_GetDistance(proxBodyId a, proxBodyId b, double maxDistance, double* distance) {
+  return guard("proxBody_GetDistance", [&] {
+    need(distance, "distance");
+    *distance = -1.0;
+    runtime::World* wa = nullptr;
+    runtime::World* wb = nullptr;
+    const runtime::Handle ha = body_of(a, wa, "a");
+    const runtime::Handle hb = body_of(b, wb, "b");
+    if (wa != wb) fail(PROX_ERROR_INVALID_HANDLE, "a and b belong to different worlds");
+    if (ha.index == hb.index) fail(PROX_ERROR_INVALID_ARGUMENT, "a and b are the same body");
+    if (std::isnan(maxDistance) || maxDistance < 0.0)
+      fail(PROX_ERROR_INVALID_ARGUMENT,
+           "maxDistance must be >= 0 (INFINITY for no bound; it is " + std::to_string(maxDistance) + ")");
+    const double d = wa->distance(ha, hb, maxDistance);
+    // The search may end on a pair beyond the bound: that is "farther" too.
+    *distance = d <= maxDistance ? d : -1.0;
   });
 }
 

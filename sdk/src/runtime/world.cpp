@@ -17,6 +17,40 @@ std::uint32_t free_slot(std::vector<Slot>& slots) {
   return static_cast<std::uint32_t>(slots.size() - 1);
 }
 
+void add(GlobalSearchStats& sum, const GlobalSearchStats& s) {
+  sum.node_pairs += s.node_pairs;
+  sum.rejected_g1 += s.rejected_g1;
+  sum.rejected_g2 += s.rejected_g2;
+  sum.rejected_g3 += s.rejected_g3;
+  sum.leaf_pairs += s.leaf_pairs;
+  sum.visibility_rejections += s.visibility_rejections;
+  sum.plane_rejections += s.plane_rejections;
+  sum.normal_rejections += s.normal_rejections;
+  sum.distance_evaluations += s.distance_evaluations;
+  sum.candidates += s.candidates;
+  sum.seconds += s.seconds;
+}
+
+void add(LocalTrackingStats& sum, const LocalTrackingStats& s) {
+  sum.pairs_in += s.pairs_in;
+  sum.pairs_out += s.pairs_out;
+  sum.distance_evaluations += s.distance_evaluations;
+  sum.cache_hits += s.cache_hits;
+  sum.duplicates_dropped += s.duplicates_dropped;
+  sum.dropped_out_of_range += s.dropped_out_of_range;
+  sum.steps += s.steps;
+  sum.seconds += s.seconds;
+}
+
+void add(PolylineStats& sum, const PolylineStats& s) {
+  sum.node_pairs += s.node_pairs;
+  sum.triangle_pairs += s.triangle_pairs;
+  sum.intersecting_pairs += s.intersecting_pairs;
+  sum.coplanar_pairs += s.coplanar_pairs;
+  sum.segments += s.segments;
+  sum.seconds += s.seconds;
+}
+
 bool overlap(const Aabb& a, const Aabb& b) {
   return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y &&
          a.min.z <= b.max.z && b.min.z <= a.max.z;
@@ -73,6 +107,7 @@ Handle World::create_body(Handle mesh, BodyType type, const Pose& pose, const Ve
   b.contacts.clear();
   b.wrench = Wrench{};
   b.device = Device{};
+  b.intersection_stats = PolylineStats{};
   meshes_[mesh.index].users += 1;
   return {i, b.generation};
 }
@@ -216,6 +251,11 @@ void World::search_tool(std::uint32_t t, const std::vector<BodyPose>& poses, Pai
       pair.body_version = poses[o].version;
       ++stats.pairs_searched;
       stats.candidates += r.candidates;
+      add(stats.search, r.global);
+      for (const LocalTrackingStats& pass : r.reduction) {
+        stats.reduction_seconds += pass.seconds;
+        stats.reduction_cache_hits += pass.cache_hits;
+      }
     }
     in_range.push_back({o, &pair});
   }
@@ -257,9 +297,59 @@ void World::step() {
   stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void World::intersections(Handle tool_handle, std::vector<std::pair<std::uint32_t, Polyline>>& out) const {
+void World::track() {
+  const auto start = std::chrono::steady_clock::now();
+  track_stats_ = TrackStats{};
+  std::vector<LmdPair> all;
+  for (std::uint32_t t = 0; t < bodies_.size(); ++t) {
+    BodySlot& tool = bodies_[t];
+    if (!tool.alive || tool.type != BodyType::Tool) continue;
+    tool.contacts.clear();
+    all.clear();
+    const MeshData& tool_mesh = *meshes_[tool.mesh].data;
+    for (std::uint32_t o = 0; o < bodies_.size(); ++o) {
+      const BodySlot& other = bodies_[o];
+      if (o == t || !other.alive) continue;
+      const auto it = pairs_.find(pair_key(t, o));
+      if (it == pairs_.end()) continue;
+      PairSlot& pair = it->second;
+      if (pair.tool_generation != tool.generation || pair.body_generation != other.generation) continue;
+      const MeshData& other_mesh = *meshes_[other.mesh].data;
+      const PairQuery q{&other_mesh.mesh, other_mesh.snch.get(), other.pose,
+                        &tool_mesh.mesh,  tool_mesh.snch.get(),  tool.pose,
+                        settings_.cutoff};
+      // The tracker the pair's method reduces with (the reference has none
+      // of its own: it is tracked like the precise method).
+      LocalTracker& tracker = settings_.method == Method::Original ? pair.state.original : pair.state.precise;
+      LocalTrackingStats local;
+      tracker.update(q, pair.lmds, local);
+      add(track_stats_.local, local);
+      ++track_stats_.pairs;
+      for (const LmdPair& p : pair.lmds) {
+        tool.contacts.push_back({o, p});
+        all.push_back(p);
+      }
+    }
+    tool.wrench = tool_wrench(settings_.force, all, tool.pose.apply(tool.reference_point));
+  }
+  track_stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double World::distance(Handle a_handle, Handle b_handle, double bound) const {
+  const BodySlot& a = bodies_[a_handle.index];
+  const BodySlot& b = bodies_[b_handle.index];
+  const MeshData& ma = *meshes_[a.mesh].data;
+  const MeshData& mb = *meshes_[b.mesh].data;
+  // While the threads run a tool is where its device last put it.
+  const PairQuery q{&ma.mesh, ma.snch.get(), current_pose(a_handle), &mb.mesh, mb.snch.get(), current_pose(b_handle),
+                    0.0};
+  return minimum_distance(q, bound);
+}
+
+void World::intersections(Handle tool_handle, std::vector<std::pair<std::uint32_t, Polyline>>& out) {
   out.clear();
-  const BodySlot& tool = bodies_[tool_handle.index];
+  BodySlot& tool = bodies_[tool_handle.index];
+  tool.intersection_stats = PolylineStats{};
   const Pose tool_pose = current_pose(tool_handle);
   const MeshData& tool_mesh = *meshes_[tool.mesh].data;
   const Aabb tool_box = world_box(tool_mesh.mesh.bounds(), tool_pose, 0.0);
@@ -278,6 +368,7 @@ void World::intersections(Handle tool_handle, std::vector<std::pair<std::uint32_
     std::vector<Polyline> lines;
     PolylineStats stats;
     intersection_polylines(q, lines, stats);
+    add(tool.intersection_stats, stats);
     for (Polyline& line : lines) out.emplace_back(o, std::move(line));
   }
 }

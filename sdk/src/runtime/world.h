@@ -44,6 +44,18 @@ struct StepStats {
   int contacts = 0;
   long candidates = 0;
   double seconds = 0.0;
+  // Summed over the pairs searched: the global searches and the reduction
+  // passes that follow them.
+  GlobalSearchStats search;
+  double reduction_seconds = 0.0;
+  std::uint64_t reduction_cache_hits = 0;
+};
+
+// What the last track() did, summed over the pairs tracked.
+struct TrackStats {
+  int pairs = 0;
+  LocalTrackingStats local;
+  double seconds = 0.0;
 };
 
 // A body's pose as a search sees it, with a version that changes whenever
@@ -79,6 +91,7 @@ class World {
   // Fails (false) while bodies use the mesh.
   bool destroy_mesh(Handle h, Status& status);
   const Mesh& mesh(Handle h) const { return meshes_[h.index].data->mesh; }
+  const Snch& snch(Handle h) const { return *meshes_[h.index].data->snch; }
 
   // Bodies.
   Handle create_body(Handle mesh, BodyType type, const Pose& pose, const Vec3& reference_point);
@@ -99,9 +112,23 @@ class World {
   Wrench wrench(Handle tool) const;
   Pose current_pose(Handle body) const;
   StepStats stats() const;
+  // Local tracking alone: every tool's contacts from the last step carried
+  // to the current poses by the pair's tracker (what the local thread does
+  // between global searches), and the wrenches recomputed. Pairs the last
+  // step did not keep are not tracked; no new pair is found. Not while the
+  // threads run.
+  void track();
+  const TrackStats& track_stats() const { return track_stats_; }
   // The intersection polylines of a tool with every body whose box meets
-  // its box, at the current poses; computed on each call.
-  void intersections(Handle tool, std::vector<std::pair<std::uint32_t, Polyline>>& out) const;
+  // its box, at the current poses; computed on each call. The call's
+  // figures are kept with the tool.
+  void intersections(Handle tool, std::vector<std::pair<std::uint32_t, Polyline>>& out);
+  const PolylineStats& intersection_stats(Handle tool) const {
+    return bodies_[tool.index].intersection_stats;
+  }
+  // The exact minimum distance between two bodies at their current poses (0
+  // when they intersect); +infinity when they are farther apart than `bound`.
+  double distance(Handle a, Handle b, double bound) const;
   int body_count() const;
   int tool_count() const;
 
@@ -159,10 +186,11 @@ class World {
     BodyType type = BodyType::Static;
     Pose pose;
     Vec3 reference_point{0.0};
-    std::uint64_t pose_version = 0;  // bumped by every set_pose
-    std::vector<Contact> contacts;   // tools: after the last step
-    Wrench wrench;                   // tools: after the last step
-    Device device;                   // tools: what holds it while the threads run
+    std::uint64_t pose_version = 0;    // bumped by every set_pose
+    std::vector<Contact> contacts;     // tools: after the last step
+    Wrench wrench;                     // tools: after the last step
+    Device device;                     // tools: what holds it while the threads run
+    PolylineStats intersection_stats;  // tools: of the last intersections() call
   };
 
   Aabb world_box(const Aabb& local, const Pose& pose, double margin) const;
@@ -173,6 +201,7 @@ class World {
   std::vector<BodySlot> bodies_;
   PairMap pairs_;
   StepStats stats_;
+  TrackStats track_stats_;
   // While the threads run, the game thread's set_pose and the global
   // search's reading of the poses meet here (never on the haptic path).
   mutable std::mutex scene_mutex_;

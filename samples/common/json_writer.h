@@ -1,11 +1,12 @@
 // A small JSON writer for the tools' machine-readable output (the CLI, the
 // benchmarks): indented, NaN and infinities written as null (JSON has
 // neither), numbers with 17 significant digits so they read back exactly.
+// Header-only and standard C++ only: it serves the samples (which see nothing
+// of the SDK but its C API) and the benchmarks alike.
 #pragma once
 
-#include "geometry/types.h"
-
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <string>
 
@@ -53,7 +54,9 @@ class JsonWriter {
     return *this;
   }
   JsonWriter& value(const char* s) { return value(std::string(s)); }
-  JsonWriter& vec3(const Vec3& v) {
+  // Any type with x, y and z: proxVec3, glm::dvec3.
+  template <typename V>
+  JsonWriter& vec3(const V& v) {
     begin_array();
     inline_ = true;
     value(v.x).value(v.y).value(v.z);
