@@ -4,6 +4,8 @@
 # 50 mm to 0.5 mm (path T of docs/cli.md), one deterministic step per pose,
 # with the precise method and the original Johnson-Cohen baseline side by
 # side: LMD counts, forces, force jumps and timings, and a CSV per step.
+# Then the same approach in real time on Proxima's threads (`proxima run`),
+# the scripted device holding the bunny.
 # Extra arguments go to `proxima path` (e.g. --steps 200 --force soft).
 # Works on a fresh Debian 12 machine; installs what it needs.
 set -euo pipefail
@@ -14,3 +16,5 @@ need_packages "${CORE_PACKAGES[@]}"
 cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build/release --target proxima -j "$(nproc)"
 build/release/samples/cli/proxima path --csv build/proxima-path.csv "$@"
+echo
+build/release/samples/cli/proxima run --json build/proxima-run.json

@@ -25,6 +25,7 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace proxcli {
@@ -40,6 +41,9 @@ const char* kUsage =
     "  proxima polylines A B [--pose-a tx ty tz qw qx qy qz] [--pose-b ...] [--json FILE]\n"
     "  proxima path [A B] [--poses FILE | --steps N] [--method precise|original|both] [--force hard|soft]\n"
     "               [--csv FILE]\n"
+    "  proxima run [A B] [--poses FILE] [--seconds S] [--hold S] [--method precise|original] [--force "
+    "hard|soft]\n"
+    "              [--json FILE]\n"
     "  proxima --version\n";
 
 // Thrown for anything the user got wrong; main prints it and exits 1.
@@ -680,6 +684,166 @@ int path(Args& args) {
   return 0;
 }
 
+// `run`: the threaded runtime in real time. The built-in scripted device
+// moves B along path T (or the --poses path) in --seconds, then holds it for
+// --hold; Proxima's haptic, local and global threads do the rest while this
+// thread samples the results every 100 ms, as a renderer would.
+int run(Args& args) {
+  std::string path_a = default_asset("bunny.obj"), path_b;
+  std::string poses_path, json_path;
+  double seconds = 2.0, hold = 0.5;
+  Settings settings = preset(PROX_FORCE_PRESET_HARD);
+  if (!args.empty() && args.peek().rfind("--", 0) != 0) {
+    path_a = args.next("mesh A");
+    path_b = args.next("mesh B");
+  }
+  while (!args.empty()) {
+    const std::string opt = args.next("option");
+    if (opt == "--seconds") {
+      seconds = parse_number(args.next("--seconds value"), "--seconds");
+      if (!(seconds > 0.0 && seconds <= 3600.0)) fail("--seconds must be in (0, 3600]");
+    } else if (opt == "--hold") {
+      hold = parse_number(args.next("--hold value"), "--hold");
+      if (!(hold >= 0.0 && hold <= 3600.0)) fail("--hold must be in [0, 3600]");
+    } else if (opt == "--method") {
+      settings.method = parse_method(args.next("--method value"));
+      if (settings.method == PROX_METHOD_REFERENCE)
+        fail("run: the reference method is too slow for real time");
+    } else if (opt == "--force") {
+      const proxMethod method = settings.method;
+      settings = parse_force(args.next("--force value"));
+      settings.method = method;
+    } else if (opt == "--poses") {
+      poses_path = args.next("--poses file");
+    } else if (opt == "--json") {
+      json_path = args.next("--json file");
+    } else {
+      fail("run: unknown option '" + opt + "'");
+    }
+  }
+  if (path_b.empty()) path_b = path_a;
+  Scene scene(settings, path_a, path_b, identity(), identity());
+  proxScriptedDeviceId device{};
+  if (!poses_path.empty()) {
+    const std::vector<proxPose> poses = read_poses(poses_path);
+    proxScriptedDeviceDef def = proxDefaultScriptedDeviceDef();
+    def.poses = poses.data();
+    def.poseCount = static_cast<int32_t>(poses.size());
+    def.secondsPerPose = seconds / static_cast<double>(poses.size() - 1);
+    check(proxWorld_CreateScriptedDevice(scene.world(), &def, &device));
+    check(proxBody_SetPose(scene.b(), &poses.front()));
+    std::printf("run: %s held along %s (%zu poses in %.3g s, then %.3g s still) against %s, cutoff %.3g m\n",
+                path_b.c_str(), poses_path.c_str(), poses.size(), seconds, hold, path_a.c_str(),
+                settings.cutoff);
+  } else {
+    const double far = 0.05, near = 0.0005;
+    const proxPose ends[2] = {translation(x_at_gap(scene, far)), translation(x_at_gap(scene, near))};
+    proxScriptedDeviceDef def = proxDefaultScriptedDeviceDef();
+    def.poses = ends;
+    def.poseCount = 2;
+    def.secondsPerPose = seconds;
+    check(proxWorld_CreateScriptedDevice(scene.world(), &def, &device));
+    check(proxBody_SetPose(scene.b(), &ends[0]));
+    std::printf(
+        "run: path T, %s held and moved along +x against %s from %.3g m to %.3g m apart in %.3g s, "
+        "then %.3g s still, cutoff %.3g m\n",
+        path_b.c_str(), path_a.c_str(), far, near, seconds, hold, settings.cutoff);
+  }
+  proxDeviceDef device_def;
+  check(proxScriptedDevice_GetDeviceDef(device, &device_def));
+  check(proxBody_SetDevice(scene.b(), &device_def));
+
+  const proxThreadsDef threads = proxDefaultThreadsDef();
+  check(proxWorld_StartThreads(scene.world(), &threads));
+  std::printf("%8s %12s %9s %12s\n", "time s", "tool x m", "contacts", "|force| N");
+  const auto start = std::chrono::steady_clock::now();
+  for (int frame = 0;; ++frame) {
+    const double t = 0.1 * frame;
+    std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                              std::chrono::duration<double>(t)));
+    proxPose pose;
+    check(proxBody_GetPose(scene.b(), &pose));
+    std::printf("%8.1f %12.6f %9zu %12.4f\n", t, pose.position.x, scene.contacts().size(),
+                length(scene.wrench().force));
+    if (t >= seconds + hold - 1e-9) break;
+  }
+  check(proxWorld_StopThreads(scene.world()));
+
+  const char* names[3] = {"haptic", "local", "global"};
+  proxThreadStats stats[3];
+  std::printf("%-7s %10s %10s %11s %11s %11s %11s %9s %9s\n", "thread", "target Hz", "rate Hz", "period p50",
+              "period p99", "period max", "work p99", "updates", "overruns");
+  for (int i = 0; i < 3; ++i) {
+    check(proxWorld_GetThreadStats(scene.world(), static_cast<proxThread>(i), &stats[i]));
+    const proxThreadStats& s = stats[i];
+    std::printf("%-7s %10.0f %10.0f %8.3f ms %8.3f ms %8.3f ms %8.3f ms %9llu %9llu\n", names[i],
+                s.targetRate, s.achievedRate, s.periodP50 * 1e3, s.periodP99 * 1e3, s.periodMax * 1e3,
+                s.updateP99 * 1e3, static_cast<unsigned long long>(s.updates),
+                static_cast<unsigned long long>(s.overruns));
+  }
+  proxSafetyStats safety;
+  check(proxWorld_GetSafetyStats(scene.world(), &safety));
+  proxScriptedDeviceRecord record;
+  check(proxScriptedDevice_GetRecord(device, &record));
+  std::printf(
+      "device: %llu poses read, %llu wrenches written; largest force %.4f N, largest change between "
+      "ticks %.4f N; %s\n",
+      static_cast<unsigned long long>(record.reads), static_cast<unsigned long long>(record.writes),
+      record.maxForce, record.maxForceStep, record.allFinite ? "all finite" : "NOT ALL FINITE");
+  std::printf(
+      "safety: %llu invalid poses, %llu stale ticks, %llu untrusted ticks, %llu limited ticks, "
+      "%llu torn snapshots\n",
+      static_cast<unsigned long long>(safety.invalidPoses),
+      static_cast<unsigned long long>(safety.staleTicks),
+      static_cast<unsigned long long>(safety.untrustedTicks),
+      static_cast<unsigned long long>(safety.limitedTicks),
+      static_cast<unsigned long long>(safety.tornSnapshots));
+
+  if (!json_path.empty()) {
+    auto count = [](uint64_t n) { return static_cast<long long>(n); };
+    Json j;
+    j.begin_object();
+    j.key("method").value(method_name(settings.method));
+    j.key("cutoff").value(settings.cutoff);
+    j.key("threads").begin_object();
+    for (int i = 0; i < 3; ++i) {
+      const proxThreadStats& s = stats[i];
+      j.key(names[i]).begin_object();
+      j.key("target_hz").value(s.targetRate);
+      j.key("achieved_hz").value(s.achievedRate);
+      j.key("period_p50_ms").value(s.periodP50 * 1e3);
+      j.key("period_p99_ms").value(s.periodP99 * 1e3);
+      j.key("period_max_ms").value(s.periodMax * 1e3);
+      j.key("update_p50_ms").value(s.updateP50 * 1e3);
+      j.key("update_p99_ms").value(s.updateP99 * 1e3);
+      j.key("update_max_ms").value(s.updateMax * 1e3);
+      j.key("updates").value(count(s.updates));
+      j.key("overruns").value(count(s.overruns));
+      j.end_object();
+    }
+    j.end_object();
+    j.key("device").begin_object();
+    j.key("reads").value(count(record.reads));
+    j.key("writes").value(count(record.writes));
+    j.key("max_force").value(record.maxForce);
+    j.key("max_torque").value(record.maxTorque);
+    j.key("max_force_step").value(record.maxForceStep);
+    j.key("all_finite").value(record.allFinite != 0);
+    j.end_object();
+    j.key("safety").begin_object();
+    j.key("invalid_poses").value(count(safety.invalidPoses));
+    j.key("stale_ticks").value(count(safety.staleTicks));
+    j.key("untrusted_ticks").value(count(safety.untrustedTicks));
+    j.key("limited_ticks").value(count(safety.limitedTicks));
+    j.key("torn_snapshots").value(count(safety.tornSnapshots));
+    j.key("dropped_contacts").value(count(safety.droppedContacts));
+    j.end_object();
+    j.end_object();
+    write_file(json_path, j.str() + "\n");
+  }
+  return record.allFinite ? 0 : 1;
+}
+
 }  // namespace
 }  // namespace proxcli
 
@@ -696,6 +860,7 @@ int main(int argc, char** argv) {
     if (command == "lmd") return lmd(args);
     if (command == "polylines") return polylines(args);
     if (command == "path") return path(args);
+    if (command == "run") return run(args);
     if (command == "--version") {
       std::printf("proxima %s\n", PROX_VERSION_STRING);
       return 0;

@@ -156,6 +156,28 @@ class CliTest(unittest.TestCase):
         self.assertLess(forces[0], forces[1])
         self.assertLess(forces[1], forces[2])
 
+    def test_run_drives_the_threads_with_the_scripted_device(self):
+        # B (the triangle turned to face A) descends onto A from 3 to 1 mm in
+        # 0.3 s, held there 0.3 s, on Proxima's threads.
+        poses = write(self.dir.name, "descent.txt", "0.1 0.1 0.003 0 1 0 0\n0.1 0.1 0.001 0 1 0 0\n")
+        json_path = os.path.join(self.dir.name, "run.json")
+        r = run("run", self.tri, self.tri, "--poses", poses, "--seconds", "0.3", "--hold", "0.3",
+                "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        with open(json_path) as f:
+            report = json.load(f)
+        for thread in ("haptic", "local", "global"):
+            self.assertGreater(report["threads"][thread]["updates"], 0, thread)
+        self.assertGreater(report["threads"]["haptic"]["updates"], 100)
+        device = report["device"]
+        self.assertTrue(device["all_finite"])
+        self.assertGreater(device["max_force"], 0.0, "a millimetre from A, the tool is pushed back")
+        self.assertLessEqual(device["max_force"], 3.0 + 1e-12)
+        self.assertEqual(report["safety"]["torn_snapshots"], 0)
+        # The last sample, held 1 mm over A, feels a force.
+        last = [l.split() for l in r.stdout.splitlines() if l.strip() and l.split()[0].replace(".", "").isdigit()][-1]
+        self.assertGreater(float(last[3]), 0.0)
+
     def test_errors_are_clear_and_exit_non_zero(self):
         cases = [
             (("info", os.path.join(self.dir.name, "missing.obj")), "missing.obj"),
@@ -176,6 +198,10 @@ class CliTest(unittest.TestCase):
             (("path", self.tri, self.tri, "--poses", write(self.dir.name, "bad.txt", "0 0 0 1 0 0\n")), "bad.txt:1"),
             (("path", self.tri, self.tri, "--poses", write(self.dir.name, "one.txt", "0 0 0 1 0 0 0\n")),
              "at least 2 poses"),
+            (("run", "--seconds", "0"), "--seconds"),
+            (("run", "--hold", "-1"), "--hold"),
+            (("run", "--method", "reference"), "real time"),
+            (("run", "--wobble"), "unknown option"),
         ]
         for args, expected in cases:
             with self.subTest(args=args):
