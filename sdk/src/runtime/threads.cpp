@@ -340,7 +340,7 @@ void Threads::global_main() {
   double deadline = now(), previous = -1.0;
   PairMap pairs;
   std::vector<PairInRange> in_range;
-  std::vector<BodyPose> poses;
+  Broadphase broadphase;
   std::vector<Pose> last_tool_pose(tools_.size());
   std::vector<std::uint64_t> tool_version(tools_.size(), 0);
   std::uint64_t sequence = 0;
@@ -352,13 +352,15 @@ void Threads::global_main() {
     }
     const double start = now();
     {
+      // The game thread's moves: copied (and the tree rebuilt) only when
+      // something other than a tool moved.
       std::lock_guard<std::mutex> lock(world_.scene_mutex_);
-      poses.resize(world_.bodies_.size());
-      for (std::size_t i = 0; i < poses.size(); ++i)
-        poses[i] = {world_.bodies_[i].pose, world_.bodies_[i].pose_version};
+      world_.refresh_poses(broadphase);
+      world_.update_broadphase(broadphase, world_.scene_version_);
     }
     // The tools' poses from the haptic loop; a version that moves only when
     // the pose does, so a still tool costs no search.
+    std::vector<BodyPose>& poses = broadphase.poses;
     for (std::size_t k = 0; k < tools_.size(); ++k) {
       const PoseSample sample = tools_[k]->pose.load();
       const bool moved = std::memcmp(&sample.pose, &last_tool_pose[k], sizeof(Pose)) != 0;
@@ -367,7 +369,7 @@ void Threads::global_main() {
     }
     StepStats stats;
     for (auto& tool : tools_) {
-      world_.search_tool(tool->body, poses, pairs, in_range, stats);
+      world_.search_tool(tool->body, broadphase, pairs, in_range, stats);
       GlobalResult& r = tool->global.back();
       r.pairs.resize(in_range.size());
       for (std::size_t i = 0; i < in_range.size(); ++i) {

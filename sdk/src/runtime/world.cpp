@@ -51,11 +51,6 @@ void add(PolylineStats& sum, const PolylineStats& s) {
   sum.seconds += s.seconds;
 }
 
-bool overlap(const Aabb& a, const Aabb& b) {
-  return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y &&
-         a.min.z <= b.max.z && b.min.z <= a.max.z;
-}
-
 }  // namespace
 
 World::World(const WorldSettings& settings) : settings_(settings) {
@@ -109,6 +104,7 @@ Handle World::create_body(Handle mesh, BodyType type, const Pose& pose, const Ve
   b.device = Device{};
   b.intersection_stats = PolylineStats{};
   meshes_[mesh.index].users += 1;
+  ++scene_version_;
   return {i, b.generation};
 }
 
@@ -122,6 +118,7 @@ void World::destroy_body(Handle h) {
   b.contacts.clear();
   b.device = Device{};
   meshes_[b.mesh].users -= 1;
+  ++scene_version_;
 }
 
 void World::set_pose(Handle h, const Pose& pose) {
@@ -134,6 +131,7 @@ void World::set_pose(Handle h, const Pose& pose) {
   if (running()) lock.lock();
   b.pose = pose;
   b.pose_version += 1;
+  if (b.type != BodyType::Tool) ++scene_version_;
 }
 
 void World::set_device(Handle tool, const Device& device) { bodies_[tool.index].device = device; }
@@ -211,26 +209,54 @@ Aabb World::world_box(const Aabb& local, const Pose& pose, double margin) const 
   return {centre - extent - Vec3(margin), centre + extent + Vec3(margin)};
 }
 
-std::vector<BodyPose> World::body_poses() const {
-  std::vector<BodyPose> poses(bodies_.size());
-  for (std::size_t i = 0; i < bodies_.size(); ++i) poses[i] = {bodies_[i].pose, bodies_[i].pose_version};
-  return poses;
+void World::refresh_poses(Broadphase& bp) const {
+  if (bp.scene_version != scene_version_ || bp.poses.size() != bodies_.size()) {
+    bp.poses.resize(bodies_.size());
+    for (std::size_t i = 0; i < bodies_.size(); ++i) bp.poses[i] = {bodies_[i].pose, bodies_[i].pose_version};
+    return;
+  }
+  for (std::uint32_t t : bp.tools) bp.poses[t] = {bodies_[t].pose, bodies_[t].pose_version};
 }
 
-void World::search_tool(std::uint32_t t, const std::vector<BodyPose>& poses, PairMap& pairs,
-                        std::vector<PairInRange>& in_range, StepStats& stats) const {
+void World::update_broadphase(Broadphase& bp, std::uint64_t version) const {
+  if (bp.scene_version == version) return;
+  bp.scene_version = version;
+  bp.tools.clear();
+  std::vector<BodyTree::Item> items;
+  for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
+    const BodySlot& b = bodies_[i];
+    if (!b.alive) continue;
+    if (b.type == BodyType::Tool) {
+      bp.tools.push_back(i);
+    } else {
+      items.push_back({world_box(meshes_[b.mesh].data->mesh.bounds(), bp.poses[i].pose, 0.0), i});
+    }
+  }
+  bp.tree.build(std::move(items));
+}
+
+void World::search_tool(std::uint32_t t, Broadphase& bp, PairMap& pairs, std::vector<PairInRange>& in_range,
+                        StepStats& stats) const {
   in_range.clear();
+  const std::vector<BodyPose>& poses = bp.poses;
   const BodySlot& tool = bodies_[t];
   const MeshData& tool_mesh = *meshes_[tool.mesh].data;
   const Pose& tool_pose = poses[t].pose;
+  // Broadphase: only bodies whose boxes meet the tool's box grown by the
+  // cutoff cost any narrow work; the tree finds the static and movable
+  // ones, the other tools (few, and moving every step) are tested here.
   const Aabb tool_box = world_box(tool_mesh.mesh.bounds(), tool_pose, settings_.cutoff);
-  for (std::uint32_t o = 0; o < bodies_.size(); ++o) {
+  std::vector<std::uint32_t>& near = bp.scratch;
+  near.clear();
+  bp.tree.query(tool_box, [&near](std::uint32_t id) { near.push_back(id); });
+  for (std::uint32_t o : bp.tools)
+    if (o != t &&
+        boxes_overlap(tool_box, world_box(meshes_[bodies_[o].mesh].data->mesh.bounds(), poses[o].pose, 0.0)))
+      near.push_back(o);
+  std::sort(near.begin(), near.end());  // results in body order, whatever the tree's
+  for (std::uint32_t o : near) {
     const BodySlot& other = bodies_[o];
-    if (o == t || !other.alive) continue;
     const MeshData& other_mesh = *meshes_[other.mesh].data;
-    // Broadphase: only pairs whose boxes (grown by the cutoff) overlap cost
-    // any narrow work.
-    if (!overlap(tool_box, world_box(other_mesh.mesh.bounds(), poses[o].pose, 0.0))) continue;
     ++stats.pairs_in_range;
     PairSlot& pair = pairs[pair_key(t, o)];
     if (pair.tool_generation != tool.generation || pair.body_generation != other.generation) {
@@ -276,13 +302,13 @@ void World::prune(PairMap& pairs) {
 void World::step() {
   const auto start = std::chrono::steady_clock::now();
   stats_ = StepStats{};
-  const std::vector<BodyPose> poses = body_poses();
+  refresh_poses(broadphase_);
+  update_broadphase(broadphase_, scene_version_);
   std::vector<PairInRange> in_range;
   std::vector<LmdPair> all;
-  for (std::uint32_t t = 0; t < bodies_.size(); ++t) {
+  for (std::uint32_t t : broadphase_.tools) {
     BodySlot& tool = bodies_[t];
-    if (!tool.alive || tool.type != BodyType::Tool) continue;
-    search_tool(t, poses, pairs_, in_range, stats_);
+    search_tool(t, broadphase_, pairs_, in_range, stats_);
     tool.contacts.clear();
     all.clear();
     for (const PairInRange& p : in_range)
@@ -341,8 +367,8 @@ double World::distance(Handle a_handle, Handle b_handle, double bound) const {
   const MeshData& ma = *meshes_[a.mesh].data;
   const MeshData& mb = *meshes_[b.mesh].data;
   // While the threads run a tool is where its device last put it.
-  const PairQuery q{&ma.mesh, ma.snch.get(), current_pose(a_handle), &mb.mesh, mb.snch.get(), current_pose(b_handle),
-                    0.0};
+  const PairQuery q{
+      &ma.mesh, ma.snch.get(), current_pose(a_handle), &mb.mesh, mb.snch.get(), current_pose(b_handle), 0.0};
   return minimum_distance(q, bound);
 }
 
@@ -357,7 +383,7 @@ void World::intersections(Handle tool_handle, std::vector<std::pair<std::uint32_
     const BodySlot& other = bodies_[o];
     if (o == tool_handle.index || !other.alive) continue;
     const MeshData& other_mesh = *meshes_[other.mesh].data;
-    if (!overlap(tool_box, world_box(other_mesh.mesh.bounds(), other.pose, 0.0))) continue;
+    if (!boxes_overlap(tool_box, world_box(other_mesh.mesh.bounds(), other.pose, 0.0))) continue;
     const PairQuery q{&other_mesh.mesh,
                       other_mesh.snch.get(),
                       other.pose,

@@ -5,6 +5,7 @@
 #include "contact/force.h"
 #include "contact/polylines.h"
 #include "contact/proximity.h"
+#include "runtime/body_tree.h"
 #include "runtime/device.h"
 #include "runtime/scripted_device.h"
 
@@ -74,6 +75,18 @@ struct PairSlot {
   bool seen = false;  // in range in the current search
 };
 using PairMap = std::unordered_map<std::uint64_t, PairSlot>;
+
+// The broadphase's memory, kept by whoever searches (the deterministic step,
+// the global search thread): the poses it works with and a tree of the
+// static and movable bodies' boxes, both rebuilt only when the scene's
+// shape or a non-tool pose changed (the scene version moved).
+struct Broadphase {
+  std::vector<BodyPose> poses;  // one per body slot; tools' refreshed every search
+  std::vector<std::uint32_t> tools;
+  BodyTree tree;
+  std::uint64_t scene_version = ~0ull;
+  std::vector<std::uint32_t> scratch;
+};
 
 // A pair the broadphase kept in a search, and its state after it.
 struct PairInRange {
@@ -154,13 +167,16 @@ class World {
   const Threads* threads() const { return threads_.get(); }
   const WorldSettings& settings() const { return settings_; }
 
-  // One tool's search against the bodies in range at the given poses (one
-  // per body slot), keeping per-pair state in `pairs`; `in_range` lists the
-  // pairs kept. What step() and the global search thread both run. Reads
-  // only the meshes and bodies' static data: safe beside the game thread
-  // while the threads run (which freeze both).
-  void search_tool(std::uint32_t tool, const std::vector<BodyPose>& poses, PairMap& pairs,
-                   std::vector<PairInRange>& in_range, StepStats& stats) const;
+  // Brings a broadphase up to date with `poses` (one per body slot) at
+  // scene version `version`: rebuilds its tree when the version moved.
+  void update_broadphase(Broadphase& bp, std::uint64_t version) const;
+  // One tool's search against the bodies in range at the broadphase's
+  // poses, keeping per-pair state in `pairs`; `in_range` lists the pairs
+  // kept, by body index. What step() and the global search thread both run.
+  // Reads only the meshes and bodies' static data: safe beside the game
+  // thread while the threads run (which freeze both).
+  void search_tool(std::uint32_t tool, Broadphase& bp, PairMap& pairs, std::vector<PairInRange>& in_range,
+                   StepStats& stats) const;
   // Drops the pairs no search has seen since the last call.
   static void prune(PairMap& pairs);
 
@@ -194,12 +210,19 @@ class World {
   };
 
   Aabb world_box(const Aabb& local, const Pose& pose, double margin) const;
-  std::vector<BodyPose> body_poses() const;
+  // Copies every body's pose into `bp` when the scene version moved, else
+  // only the tools'.
+  void refresh_poses(Broadphase& bp) const;
 
   WorldSettings settings_;
   std::vector<MeshSlot> meshes_;
   std::vector<BodySlot> bodies_;
   PairMap pairs_;
+  Broadphase broadphase_;  // the deterministic step's
+  // Moves with every change the broadphase must see: bodies created or
+  // destroyed, static and movable bodies moved (tools move every step and
+  // are tested on their own).
+  std::uint64_t scene_version_ = 0;
   StepStats stats_;
   TrackStats track_stats_;
   // While the threads run, the game thread's set_pose and the global
