@@ -30,6 +30,10 @@
 #endif
 #include "runtime/world.h"
 
+#ifdef PROX_BENCH_WITH_COAL
+#include "coal_peer.h"
+#endif
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
@@ -129,6 +133,10 @@ struct Model {
   std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fcl;
   std::vector<double> fcl_build_seconds;
   std::size_t fcl_memory_bytes = 0;
+#endif
+#ifdef PROX_BENCH_WITH_COAL
+  std::shared_ptr<const CoalMesh> coal;
+  std::vector<double> coal_build_seconds;
 #endif
 };
 
@@ -251,6 +259,13 @@ std::shared_ptr<Model> load_model(const MeshSource& source, const std::string& m
   model->fcl_memory_bytes = sizeof(fcl::BVNode<fcl::OBBRSSd>) * static_cast<std::size_t>(bvh.getNumBVs()) +
                             sizeof(fcl::Triangle) * static_cast<std::size_t>(bvh.num_tris) +
                             sizeof(fcl::Vector3d) * static_cast<std::size_t>(bvh.num_vertices) + sizeof(bvh);
+#endif
+#ifdef PROX_BENCH_WITH_COAL
+  for (int i = 0; i < kBuildRepetitions; ++i) {
+    const CoalBuild built = coal_build(m);
+    model->coal = built.mesh;
+    model->coal_build_seconds.push_back(built.seconds);
+  }
 #endif
   std::printf(
       "%s: %u triangles, size %.3f m, largest / median triangle area %.0f; SNCH %u nodes, built in %.1f ms "
@@ -786,6 +801,9 @@ void mesh_json(Json& j, const Model& model, const char* used_as) {
   j.field("fcl_build_ms", median(model.fcl_build_seconds) * 1e3);
   j.field("fcl_memory_bytes", model.fcl_memory_bytes);
 #endif
+#ifdef PROX_BENCH_WITH_COAL
+  j.field("coal_build_ms", median(model.coal_build_seconds) * 1e3);
+#endif
   j.end_object();
 }
 
@@ -829,7 +847,12 @@ std::string summary_json(const SceneRun& run, const Options& opt) {
 #else
   j.field("fcl", false);
 #endif
-  j.field("coal", false).field("peer_note", kPeerNote);
+#ifdef PROX_BENCH_WITH_COAL
+  j.field("coal", true).field("coal_version", coal_version());
+#else
+  j.field("coal", false);
+#endif
+  j.field("peer_note", kPeerNote);
 
   j.key("meshes").begin_array();
   if (run.a == run.b) {
@@ -883,11 +906,13 @@ std::string summary_json(const SceneRun& run, const Options& opt) {
     j.end_object();
     j.end_object();
   }
-  for (const char* m : {"min-distance", "fcl", "reference"}) {
+  for (const char* m : {"min-distance", "fcl", "coal", "reference"}) {
     if (rows_of(run, m, false).empty()) continue;
     j.key(m).begin_object();
     both(j, run, m, "query_ms", &Row::query_ms);
-    if (std::string(m) != "reference") {
+    if (std::string(m) == "coal") {
+      both(j, run, m, "pairs_within_cutoff", &Row::candidates);
+    } else if (std::string(m) != "reference") {
       const auto rows = rows_of(run, m, false);
       j.field("min_distance_error_max", maximum(values(rows, &Row::min_distance_error)));
       j.field("min_distance_error_max_over_size", maximum(values(rows, &Row::min_distance_error)) / size);
@@ -924,6 +949,13 @@ std::string summary_json(const SceneRun& run, const Options& opt) {
       j.field("of_medians", ratio_of_medians(num, "fcl", &Row::query_ms, contact));
       j.end_object();
     }
+    if (!rows_of(run, "coal", false).empty()) {
+      const auto r = pose_ratios(run, "precise", "coal", contact);
+      j.key("precise_over_coal").begin_object();
+      j.field("per_pose_median", median(r)).field("per_pose_p99", percentile(r, 0.99));
+      j.field("of_medians", ratio_of_medians("precise", "coal", &Row::query_ms, contact));
+      j.end_object();
+    }
     j.end_object();
   }
   j.end_object();
@@ -935,6 +967,11 @@ std::string summary_json(const SceneRun& run, const Options& opt) {
     j.field("precise_query_over_fcl_per_pose_median", median(pose_ratios(run, "precise", "fcl", false)));
     j.field("precise_query_over_fcl_per_pose_median_contact",
             median(pose_ratios(run, "precise", "fcl", true)));
+  }
+  if (!rows_of(run, "coal", false).empty()) {
+    j.field("precise_query_over_coal_per_pose_median", median(pose_ratios(run, "precise", "coal", false)));
+    j.field("precise_query_over_coal_per_pose_median_contact",
+            median(pose_ratios(run, "precise", "coal", true)));
   }
   j.field("precise_local_p99_us",
           percentile(values(rows_of(run, "precise", true), &Row::local_ms), 0.99) * 1e3);
@@ -1071,6 +1108,17 @@ SceneRun run_scene(const Scene& scene, const Model& a, const Model& b, int poses
       run.rows.push_back(fr);
     }
 #endif
+#ifdef PROX_BENCH_WITH_COAL
+    {
+      // Every triangle pair within the cutoff: the pairs go in `candidates`.
+      Row cr = base;
+      cr.method = "coal";
+      const CoalMargin c = coal_margin_collide(*a.coal, *b.coal, p.pose, cutoff);
+      cr.query_ms = c.seconds * 1e3;
+      cr.candidates = double(c.pairs);
+      run.rows.push_back(cr);
+    }
+#endif
 
     const bool with_reference = reference_every > 0 && (i % static_cast<std::size_t>(reference_every) == 0 ||
                                                         i + 1 == run.path.size());
@@ -1133,7 +1181,7 @@ void print_summary(const SceneRun& run) {
   std::printf("   times over the poses in contact: median / p99\n");
   std::printf("   %-13s %19s %17s %17s %19s %15s\n", "method", "global+reduction ms", "global ms",
               "reduction ms", "local update us", "force eval ns");
-  for (const char* m : {"precise", "original", "min-distance", "fcl", "reference"}) {
+  for (const char* m : {"precise", "original", "min-distance", "fcl", "coal", "reference"}) {
     const auto rows = rows_of(run, m, true);
     if (rows.empty()) continue;
     auto pair = [&](double Row::*f, double scale, const char* format) {
@@ -1187,6 +1235,16 @@ void print_summary(const SceneRun& run) {
         "Proxima's exact minimum to %s m\n",
         fmt(median(md), "%.2f").c_str(),
         fmt(maximum(values(rows_of(run, "fcl", false), &Row::min_distance_error)), "%.1e").c_str());
+  }
+  if (!rows_of(run, "coal", false).empty()) {
+    const auto in = pose_ratios(run, "precise", "coal", true);
+    const auto pairs = values(rows_of(run, "coal", true), &Row::candidates);
+    std::printf(
+        "   precise / Coal margin collide (every triangle pair within the cutoff), per pose in contact: "
+        "median "
+        "%s, p99 %s; Coal's pairs in contact: median %s, max %s\n",
+        fmt(median(in), "%.3f").c_str(), fmt(percentile(in, 0.99), "%.3f").c_str(),
+        fmt(median(pairs), "%.0f").c_str(), fmt(maximum(pairs), "%.0f").c_str());
   }
 }
 
@@ -1348,7 +1406,13 @@ int run(int argc, char** argv) {
   const bool many_bodies = opt.scene == "many-bodies" || opt.scene == "bunny" || opt.scene == "all";
   if (chosen.empty() && !many_bodies) usage_error("--scene: no scene '" + opt.scene + "' (try --list)");
   std::filesystem::create_directories(opt.out);
-  std::printf("%s Coal is not measured yet.\n", kPeerNote);
+  std::printf("%s\n", kPeerNote);
+#ifdef PROX_BENCH_WITH_COAL
+  std::printf("Coal %s: collide with security_margin = the cutoff, every triangle pair within it.\n",
+              coal_version().c_str());
+#else
+  std::printf("Coal: not built in (PROX_BENCH_WITH_COAL=OFF).\n");
+#endif
 #ifdef PROX_BENCH_WITH_FCL
   std::printf("FCL %s: OBBRSS BVH per mesh, built once.\n", FCL_VERSION);
 #else
