@@ -10,7 +10,9 @@ them. Writes into OUTPUT_DIR:
                                       reduction), global time, local time
   figure7-path-r.png                  the same along path R
   pareto.png                          run time against error, one point per
-                                      method and scene
+                                      method and scene (bunny and CAD scenes)
+  scaling.png                         time against triangle count, log-log,
+                                      with the peers (the scaling-* scenes)
   tables.md                           the summary tables, in Markdown (with
                                       RESULTS_DIR/machine.txt when present)
 Needs matplotlib (scripts/bench.sh installs it from PyPI into a venv).
@@ -27,8 +29,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 COLOURS = {"precise": "tab:blue", "original": "tab:red", "reference": "black",
-           "fcl": "tab:green", "min-distance": "tab:purple"}
-MARKERS = {"path-t": "o", "paper-hard": "o", "path-r": "s", "paper-soft": "^"}
+           "fcl": "tab:green", "min-distance": "tab:purple", "coal": "tab:orange"}
+MARKERS = {"path-t": "o", "paper-hard": "o", "path-r": "s", "paper-soft": "^", "cad-engine": "D",
+           "cad-saw": "v", "cad-bunny-engine": "P", "cad-saw-engine": "X"}
+ORDER = ["path-t", "paper-hard", "path-r", "paper-soft", "cad-engine", "cad-saw", "cad-bunny-engine",
+         "cad-saw-engine", "scaling-2k", "scaling-7k", "scaling-28k", "scaling-111k", "scaling-446k"]
 
 
 def number(text):
@@ -113,12 +118,11 @@ def figure7(rows, summary, path, title):
 
 def pareto(summaries, path):
     """Run time against error: one point per method and scene."""
-    fig, axes = plt.subplots(1, 3, figsize=(15, 5))
+    fig, axes = plt.subplots(1, 3, figsize=(18, 5.5))
     floor = 1e-19
     for scene, s in summaries.items():
         marker = MARKERS.get(scene, "D")
         methods = s["methods"]
-        size = s["meshes"][0]["size"]
         for m, data in methods.items():
             t = data["query_ms"]["contact"]["median"]
             if not finite(t):
@@ -134,10 +138,12 @@ def pareto(summaries, path):
                     axes[1].scatter(t, max(ferr, 1e-6), c=c, marker=marker, label=label)
                 recall = acc["recall"] if m == "precise" else acc["recall_2mm"]
                 axes[2].scatter(t, max(1.0 - recall, 1e-4) if finite(recall) else 1.0, c=c, marker=marker,
-                                label=label + (" (2 mm match)" if m == "original" else ""))
+                                label=label + (" (0.4-cutoff match)" if m == "original" else ""))
             elif m in ("fcl", "min-distance"):
                 err = data["min_distance_error_max_over_size"]
                 axes[0].scatter(t, max(err, floor) if finite(err) else floor, c=c, marker=marker, label=label)
+            elif m == "coal":
+                continue  # pairs within the cutoff, no distances or forces to score
             elif m == "reference":
                 axes[0].scatter(t, floor, c=c, marker=marker, label=label)
                 axes[1].scatter(t, 1e-6, c=c, marker=marker, label=label)
@@ -153,10 +159,72 @@ def pareto(summaries, path):
     axes[0].set_title("minimum distance (every method, FCL too)", fontsize=9)
     axes[1].set_title("force on the tool (LMD-set methods)", fontsize=9)
     axes[2].set_title("LMD recall (LMD-set methods)", fontsize=9)
-    axes[2].legend(fontsize=6, loc="center right")
-    axes[0].legend(fontsize=6, loc="center right")
+    if axes[2].get_legend_handles_labels()[0]:
+        axes[2].legend(fontsize=5, loc="center left", bbox_to_anchor=(1.0, 0.5))
     fig.suptitle("Run time against error: lower left is better (FCL and min-distance return one pair, "
                  "not an LMD set)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def scaling(summaries, path):
+    """Time against triangle count, log-log: medians over the poses in contact."""
+    levels = sorted(summaries.values(), key=lambda s: s["meshes"][0]["triangles"])
+    tris = [s["meshes"][0]["triangles"] for s in levels]
+    fig, axes = plt.subplots(1, 2, figsize=(14, 5.5))
+    ax = axes[0]
+
+    def series(method, key, scale=1.0, stat="median"):
+        out = []
+        for s in levels:
+            d = s["methods"].get(method, {}).get(key)
+            v = d["contact"][stat] if d else math.nan
+            out.append(v * scale if finite(v) else math.nan)
+        return out
+    ax.plot(tris, series("precise", "query_ms"), "o-", c=COLOURS["precise"], label="precise: global + reduction")
+    ax.plot(tris, series("precise", "global_ms"), "o--", c=COLOURS["precise"], alpha=0.7,
+            label="precise: global search")
+    ax.plot(tris, series("precise", "reduction_ms"), "o:", c=COLOURS["precise"], alpha=0.7,
+            label="precise: reduction")
+    ax.plot(tris, series("precise", "local_ms"), "s-", c="tab:cyan", label="precise: local update (median)")
+    ax.plot(tris, series("precise", "local_ms", stat="p99"), "s:", c="tab:cyan", label="precise: local update (p99)")
+    ax.plot(tris, series("original", "query_ms"), "o-", c=COLOURS["original"], label="original: global + reduction")
+    ax.plot(tris, series("fcl", "query_ms"), "^-", c=COLOURS["fcl"], label="FCL distance (one pair)")
+    ax.plot(tris, series("min-distance", "query_ms"), "^--", c=COLOURS["min-distance"],
+            label="Proxima min-distance (one pair)")
+    if any(finite(v) for v in series("coal", "query_ms")):
+        ax.plot(tris, series("coal", "query_ms"), "v-", c=COLOURS["coal"], label="Coal margin collide (all pairs)")
+    lo, hi = min(tris), max(tris)
+    ref = series("precise", "global_ms")[0]
+    if finite(ref):
+        ax.plot([lo, hi], [ref, ref * hi / lo], c="grey", lw=0.6, ls="--", label="linear in triangles (from 2k)")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("triangles per bunny (A and B the same)")
+    ax.set_ylabel("ms, median over the poses in contact (path T)")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7)
+    ax.set_title("query times against mesh size", fontsize=9)
+    ax = axes[1]
+    ax.plot(tris, [s["meshes"][0]["snch_build_ms"] for s in levels], "o-", c=COLOURS["precise"], label="SNCH build (ms)")
+    ax.plot(tris, [s["meshes"][0].get("fcl_build_ms", math.nan) for s in levels], "^-", c=COLOURS["fcl"],
+            label="FCL OBBRSS build (ms)")
+    if any("coal_build_ms" in s["meshes"][0] for s in levels):
+        ax.plot(tris, [s["meshes"][0].get("coal_build_ms", math.nan) for s in levels], "v-", c=COLOURS["coal"],
+                label="Coal OBBRSS build (ms)")
+    ax.plot(tris, [s["meshes"][0]["snch_memory_bytes"] / 2**20 for s in levels], "o--", c="tab:brown",
+            label="SNCH memory (MiB)")
+    ax.plot(tris, [s["meshes"][0].get("fcl_memory_bytes", math.nan) / 2**20 for s in levels], "^--", c="tab:olive",
+            label="FCL memory (MiB)")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("triangles")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7)
+    ax.set_title("hierarchy build time and memory per mesh", fontsize=9)
+    fig.suptitle("Scaling: the bunny from 2k (decimated) to 446k (subdivided) triangles, path T, cutoff 5 mm",
+                 fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -175,13 +243,13 @@ def tables(summaries, path, machine=None):
     for scene, s in summaries.items():
         m = s["methods"]
         out.append(f"### {scene}\n")
-        out.append(f"{s['description']} {s['path']['poses']} poses, {s['contact_poses']} within the cutoff; "
-                   f"reference at {s['reference_poses']} poses.\n")
+        out.append(f"{s['description']} {s['path']['poses']} poses, {s['contact_poses']} within the cutoff "
+                   f"({s['cutoff'] * 1e3:.2f} mm); reference at {s['reference_poses']} poses.\n")
         out.append("Times over the poses in contact, median / p99:\n")
         out.append("| method | global + reduction (ms) | global (ms) | reduction (ms) | local update (µs) "
                    "| force evaluation (ns) |")
         out.append("|---|---|---|---|---|---|")
-        for name in ("precise", "original", "min-distance", "fcl", "reference"):
+        for name in ("precise", "original", "min-distance", "fcl", "coal", "reference"):
             if name not in m:
                 continue
             d = m[name]
@@ -197,7 +265,7 @@ def tables(summaries, path, machine=None):
         out.append("")
         out.append("| method | max LMDs | max before reduction | reduction (overall / max) | node pairs (median) "
                    "| leaf pairs (median) | reduction cache hits (median) | recall | precision "
-                   "| recall / precision within 2 mm | max min-distance error / size | max force error (N) "
+                   "| recall / precision within 0.4 cutoffs | max min-distance error / size | max force error (N) "
                    "| max force jump (N) | total variation (N) |")
         out.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         for name in ("precise", "original"):
@@ -226,6 +294,13 @@ def tables(summaries, path, machine=None):
                 f"{fmt(r['contact']['precise_over_original']['reduction_ms'], '.2f')}, local update "
                 f"{fmt(r['contact']['precise_over_original']['local_ms'], '.2f')}.")
         out.append(line)
+        if "coal" in m:
+            pc = r["contact"]["precise_over_coal"]
+            pairs = m["coal"]["pairs_within_cutoff"]["contact"]
+            out.append(f"Per-pose ratio precise / Coal's margin collide (every triangle pair within the cutoff), in "
+                       f"contact: median {fmt(pc['per_pose_median'], '.3f')} (p99 {fmt(pc['per_pose_p99'], '.3f')}); "
+                       f"Coal's pairs in contact: median {fmt(pairs['median'], '.0f')}, max "
+                       f"{fmt(pairs['max'], '.0f')}.")
         if "precise_over_fcl" in r["all"]:
             pf, pc = r["all"]["precise_over_fcl"], r["contact"]["precise_over_fcl"]
             mf = r["all"]["min-distance_over_fcl"]
@@ -236,16 +311,45 @@ def tables(summaries, path, machine=None):
                        f"{fmt(mf['per_pose_median'], '.2f')}. FCL agrees with Proxima's exact minimum distance "
                        f"to {fmt(m['fcl']['min_distance_error_max'], '.1e')} m.")
         out.append("")
-    meshes = next(iter(summaries.values()))["meshes"]
+    levels = sorted((s for n, s in summaries.items() if n.startswith("scaling-")),
+                    key=lambda s: s["meshes"][0]["triangles"])
+    if levels:
+        out.append("### Scaling\n")
+        out.append("Path T on the bunny at each resolution; medians over the poses in contact (ms; local update in "
+                   "µs, median / p99).\n")
+        out.append("| triangles | precise global | precise reduction | precise global + reduction | precise local "
+                   "update (µs) | original global + reduction | FCL distance | Proxima min-distance "
+                   "| Coal margin collide | poses in contact |")
+        out.append("|---|---|---|---|---|---|---|---|---|---|")
+        for s in levels:
+            m = s["methods"]
+
+            def med(method, key, scale=1.0, stat="median"):
+                d = m.get(method, {}).get(key)
+                v = d["contact"][stat] if d else None
+                return fmt(v * scale if finite(v) else None, ".3f" if scale == 1.0 else ".1f")
+            out.append(f"| {s['meshes'][0]['triangles']} | {med('precise', 'global_ms')} "
+                       f"| {med('precise', 'reduction_ms')} | {med('precise', 'query_ms')} "
+                       f"| {med('precise', 'local_ms', 1e3)} / {med('precise', 'local_ms', 1e3, 'p99')} "
+                       f"| {med('original', 'query_ms')} | {med('fcl', 'query_ms')} | {med('min-distance', 'query_ms')} "
+                       f"| {med('coal', 'query_ms')} | {s['contact_poses']} |")
+        out.append("")
+    meshes = {}
+    for s in summaries.values():
+        for mesh in s["meshes"]:
+            meshes.setdefault(mesh["name"], mesh)
     out.append("### Hierarchies\n")
-    out.append("| mesh | triangles | SNCH nodes | depth | SNCH build (ms) | SNCH memory (MiB) | FCL OBBRSS build (ms) "
-               "| FCL memory (MiB) |")
-    out.append("|---|---|---|---|---|---|---|---|")
-    for mesh in meshes:
-        out.append(f"| {mesh['name']} | {mesh['triangles']} | {mesh['snch_nodes']} | {mesh['snch_depth']} "
+    out.append("Median of 3 builds per mesh.\n")
+    out.append("| mesh | triangles | largest / median triangle area | SNCH nodes | depth | SNCH build (ms) "
+               "| SNCH memory (MiB) | FCL OBBRSS build (ms) | FCL memory (MiB) | Coal OBBRSS build (ms) |")
+    out.append("|---|---|---|---|---|---|---|---|---|---|")
+    for mesh in sorted(meshes.values(), key=lambda m: m["triangles"]):
+        out.append(f"| {mesh['name']} | {mesh['triangles']} | {fmt(mesh.get('max_over_median_triangle_area'), '.0f')} "
+                   f"| {mesh['snch_nodes']} | {mesh['snch_depth']} "
                    f"| {fmt(mesh['snch_build_ms'], '.1f')} | {fmt(mesh['snch_memory_bytes'] / 2**20, '.2f')} "
                    f"| {fmt(mesh.get('fcl_build_ms'), '.1f')} "
-                   f"| {fmt(mesh['fcl_memory_bytes'] / 2**20 if 'fcl_memory_bytes' in mesh else None, '.2f')} |")
+                   f"| {fmt(mesh['fcl_memory_bytes'] / 2**20 if 'fcl_memory_bytes' in mesh else None, '.2f')} "
+                   f"| {fmt(mesh.get('coal_build_ms'), '.1f')} |")
     out.append("")
     with open(path, "w") as f:
         f.write("\n".join(out))
@@ -256,15 +360,14 @@ def main():
         sys.exit(__doc__)
     results, out = sys.argv[1], sys.argv[2]
     os.makedirs(out, exist_ok=True)
-    order = ["path-t", "paper-hard", "path-r", "paper-soft"]
-    names = [n for n in order if os.path.exists(os.path.join(results, n + ".json"))]
+    names = [n for n in ORDER if os.path.exists(os.path.join(results, n + ".json"))]
     if not names:
         sys.exit(f"plot.py: no scene results in {results}")
     summaries = {}
     for n in names:
         with open(os.path.join(results, n + ".json")) as f:
             summaries[n] = json.load(f)
-    rows = {n: read_rows(os.path.join(results, n + ".csv")) for n in names}
+    rows = {n: read_rows(os.path.join(results, n + ".csv")) for n in names if not n.startswith("scaling-")}
     hard = "paper-hard" if "paper-hard" in names else ("path-t" if "path-t" in names else None)
     if hard:
         figure7(rows[hard], summaries[hard], os.path.join(out, "figure7-hard.png"),
@@ -275,8 +378,15 @@ def main():
     if "path-r" in names:
         figure7(rows["path-r"], summaries["path-r"], os.path.join(out, "figure7-path-r.png"),
                 "Path R (hard force, cutoff 5 mm): bunny B turning 90° while approaching, 50 mm to 0.5 mm")
-    pareto({n: summaries[n] for n in names if n != "paper-hard" or "path-t" not in names},
+    if "cad-saw-engine" in names:
+        figure7(rows["cad-saw-engine"], summaries["cad-saw-engine"], os.path.join(out, "figure7-cad-saw-engine.png"),
+                "CAD: saw housing half approaching the engine's cylinder block (hard force scaled, cutoff 2% of size)")
+    pareto({n: summaries[n] for n in names
+            if not n.startswith("scaling-") and (n != "paper-hard" or "path-t" not in names)},
            os.path.join(out, "pareto.png"))
+    levels = {n: summaries[n] for n in names if n.startswith("scaling-")}
+    if len(levels) >= 2:
+        scaling(levels, os.path.join(out, "scaling.png"))
     machine_path = os.path.join(results, "machine.txt")
     machine = open(machine_path).read() if os.path.exists(machine_path) else None
     tables(summaries, os.path.join(out, "tables.md"), machine)

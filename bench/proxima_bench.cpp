@@ -1,8 +1,15 @@
 // proxima_bench: run time against error on named scenes, every method side by
 // side on the same poses in one run (issue 5, docs/benchmarks.md).
 //
-//   proxima_bench [--scene NAME|all] [--poses N] [--out DIR] [--reference-every K]
-//                 [--local-reps R] [--force-reps R] [--list]
+//   proxima_bench [--scene NAME|GROUP|all] [--poses N] [--out DIR] [--reference-every K]
+//                 [--local-reps R] [--force-reps R] [--meshes DIR] [--scaling-poses N]
+//                 [--scaling-reference-every K] [--cad-poses N] [--max-triangles N] [--list]
+//
+// Scenes come in groups: bunny (bunny against bunny on paths T and R, the
+// paper's hard and soft settings, many bodies), cad (2CylinderEngine and
+// ReciprocatingSaw parts against each other and the bunny) and scaling (path T
+// on the bunny from 2k to 446k triangles; the decimated levels are read from
+// --meshes, where bench/decimate.py writes them).
 //
 // At every pose of a scene's path, in this order: the precise method (a local
 // update of the previous step's set to the new pose, as the local thread does,
@@ -18,7 +25,14 @@
 #include "contact/global_search.h"
 #include "contact/proximity.h"
 #include "io/obj.h"
+#if PROX_WITH_GLTF
+#include "io/gltf.h"
+#endif
 #include "runtime/world.h"
+
+#ifdef PROX_BENCH_WITH_COAL
+#include "coal_peer.h"
+#endif
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -38,9 +52,11 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -91,6 +107,19 @@ void write_file(const std::string& path, const std::string& text) {
 
 // ---- models ----------------------------------------------------------------------
 
+// Where a mesh comes from. Lengths end up in metres: the bunny's files are in
+// metres, the CAD models in millimetres (2CylinderEngine's box is about
+// 743 x 273 x 268 file units, a two-cylinder engine; ReciprocatingSaw's
+// 375 x 84 x 149, a hand saw), so those are scaled by 0.001.
+struct MeshSource {
+  std::string label;       // the name in tables and plots
+  std::string file;        // relative to the shared assets, or to --meshes when `generated`
+  int part = -1;           // glTF node in PerNode order (io::GltfSceneMode::PerNode); -1: the whole file
+  double scale = 1.0;      // file units to metres
+  int subdivisions = 0;    // 1 -> 4 midpoint splits after loading
+  bool generated = false;  // written by scripts/decimate.py into the --meshes folder
+};
+
 struct Model {
   std::string name, file;
   Mesh mesh;
@@ -99,10 +128,15 @@ struct Model {
   Vec3 box_centre{0.0};                    // the tool's reference point for torques
   Vec3 centroid{0.0};                      // area-weighted surface centroid: path R turns about it
   std::vector<double> snch_build_seconds;  // one per build
+  double max_over_median_area = kNaN;      // how uneven the triangles are
 #ifdef PROX_BENCH_WITH_FCL
   std::shared_ptr<fcl::BVHModel<fcl::OBBRSSd>> fcl;
   std::vector<double> fcl_build_seconds;
   std::size_t fcl_memory_bytes = 0;
+#endif
+#ifdef PROX_BENCH_WITH_COAL
+  std::shared_ptr<const CoalMesh> coal;
+  std::vector<double> coal_build_seconds;
 #endif
 };
 
@@ -113,15 +147,74 @@ std::string asset_path(const std::string& name) {
 
 constexpr int kBuildRepetitions = 3;  // hierarchy builds per mesh; the median is reported
 
-std::shared_ptr<Model> load_model(const std::string& name) {
-  auto model = std::make_shared<Model>();
-  model->name = name;
-  model->file = asset_path(name);
-  io::ObjData obj;
-  const Status s = io::read_obj(model->file, obj);
+// Splits every triangle into four at its edge midpoints (shared between the
+// two triangles of an edge, so the mesh stays welded). The surface is the
+// same, so distances stay comparable across levels.
+void subdivide(std::vector<double>& positions, std::vector<std::uint32_t>& indices) {
+  std::unordered_map<std::uint64_t, std::uint32_t> midpoints;
+  auto midpoint = [&](std::uint32_t i, std::uint32_t j) {
+    const std::uint64_t key = (std::uint64_t{std::min(i, j)} << 32) | std::max(i, j);
+    const auto found = midpoints.find(key);
+    if (found != midpoints.end()) return found->second;
+    const std::uint32_t v = static_cast<std::uint32_t>(positions.size() / 3);
+    double p[3];
+    for (std::size_t k = 0; k < 3; ++k) p[k] = 0.5 * (positions[3 * i + k] + positions[3 * j + k]);
+    positions.insert(positions.end(), p, p + 3);
+    midpoints.emplace(key, v);
+    return v;
+  };
+  std::vector<std::uint32_t> out;
+  out.reserve(4 * indices.size());
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const std::uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
+    const std::uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+    out.insert(out.end(), {a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca});
+  }
+  indices = std::move(out);
+}
+
+void read_source(const MeshSource& source, const std::string& path, std::vector<double>& positions,
+                 std::vector<std::uint32_t>& indices) {
+  const std::string extension = std::filesystem::path(path).extension().string();
+  if (extension == ".obj") {
+    io::ObjData obj;
+    const Status s = io::read_obj(path, obj);
+    if (!s)
+      throw UserError(s.message() + (source.generated
+                                         ? " (scripts/decimate.py writes it; see docs/benchmarks.md)"
+                                         : " (the shared assets must sit beside the repository)"));
+    positions = std::move(obj.positions);
+    indices = std::move(obj.indices);
+    return;
+  }
+#if PROX_WITH_GLTF
+  std::vector<io::GltfMesh> meshes;
+  io::GltfLoadOptions options;
+  options.mode = source.part < 0 ? io::GltfSceneMode::Merged : io::GltfSceneMode::PerNode;
+  const Status s = io::load_gltf(path, options, meshes);
   if (!s) throw UserError(s.message() + " (the shared assets must sit beside the repository)");
-  const MeshInput input{obj.positions.data(), static_cast<std::uint32_t>(obj.positions.size() / 3),
-                        obj.indices.data(), static_cast<std::uint32_t>(obj.indices.size() / 3)};
+  const std::size_t i = source.part < 0 ? 0 : static_cast<std::size_t>(source.part);
+  if (i >= meshes.size())
+    throw UserError(path + ": no node " + std::to_string(source.part) + " with triangles (" +
+                    std::to_string(meshes.size()) + " in PerNode order)");
+  positions = std::move(meshes[i].positions);
+  indices = std::move(meshes[i].indices);
+#else
+  throw UserError(path + ": built without glTF support (PROX_WITH_GLTF=OFF)");
+#endif
+}
+
+std::shared_ptr<Model> load_model(const MeshSource& source, const std::string& meshes_dir) {
+  auto model = std::make_shared<Model>();
+  model->name = source.label;
+  model->file = source.generated ? meshes_dir + "/" + source.file : asset_path(source.file);
+  std::vector<double> positions;
+  std::vector<std::uint32_t> indices;
+  read_source(source, model->file, positions, indices);
+  for (double& x : positions) x *= source.scale;
+  for (int i = 0; i < source.subdivisions; ++i) subdivide(positions, indices);
+  const MeshInput input{positions.data(), static_cast<std::uint32_t>(positions.size() / 3), indices.data(),
+                        static_cast<std::uint32_t>(indices.size() / 3)};
   Status status;
   model->mesh = Mesh::build(input, status);
   if (!status) throw UserError(model->file + ": " + status.message());
@@ -130,13 +223,16 @@ std::shared_ptr<Model> load_model(const std::string& name) {
   model->box_centre = 0.5 * (m.bounds().max + m.bounds().min);
   double area = 0.0;
   Vec3 sum(0.0);
+  std::vector<double> areas;
   for (std::uint32_t t = 0; t < m.triangle_count(); ++t) {
     const Triangle tri = m.triangle(t);
     const double a = 0.5 * glm::length(glm::cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]));
     area += a;
     sum += a * (tri.v[0] + tri.v[1] + tri.v[2]) / 3.0;
+    areas.push_back(a);
   }
   model->centroid = area > 0.0 ? sum / area : model->box_centre;
+  model->max_over_median_area = ratio(maximum(areas), median(areas));
   for (int i = 0; i < kBuildRepetitions; ++i) {
     model->snch = std::make_unique<Snch>(m);
     model->snch_build_seconds.push_back(model->snch->stats().build_seconds);
@@ -164,6 +260,25 @@ std::shared_ptr<Model> load_model(const std::string& name) {
                             sizeof(fcl::Triangle) * static_cast<std::size_t>(bvh.num_tris) +
                             sizeof(fcl::Vector3d) * static_cast<std::size_t>(bvh.num_vertices) + sizeof(bvh);
 #endif
+#ifdef PROX_BENCH_WITH_COAL
+  for (int i = 0; i < kBuildRepetitions; ++i) {
+    const CoalBuild built = coal_build(m);
+    model->coal = built.mesh;
+    model->coal_build_seconds.push_back(built.seconds);
+  }
+#endif
+  std::printf(
+      "%s: %u triangles, size %.3f m, largest / median triangle area %.0f; SNCH %u nodes, built in %.1f ms "
+      "(median of %d), %.2f MiB",
+      model->name.c_str(), m.triangle_count(), model->size, model->max_over_median_area,
+      model->snch->stats().nodes, median(model->snch_build_seconds) * 1e3, kBuildRepetitions,
+      double(model->snch->stats().memory_bytes) / (1 << 20));
+#ifdef PROX_BENCH_WITH_FCL
+  std::printf("; FCL OBBRSS BVH %.1f ms, %.2f MiB\n", median(model->fcl_build_seconds) * 1e3,
+              double(model->fcl_memory_bytes) / (1 << 20));
+#else
+  std::printf("\n");
+#endif
   return model;
 }
 
@@ -182,38 +297,142 @@ fcl::Transform3d to_fcl(const Pose& p) {
 // ---- scenes --------------------------------------------------------------------
 
 enum class PathKind {
-  Translate,  // B along +x, linear in x between the x of two gaps
+  Translate,  // B along `direction`, linear in the offset between the offsets of two gaps
   Rotate,     // path R: B turned about its centroid, x set per pose for a gap
 };
+
+MeshSource bunny_source() { return {"bunny", "bunny.obj", -1, 1.0, 0, false}; }
+// The CAD parts, by node in PerNode order (sizes in mm, the file's units):
+// 2CylinderEngine node 8 "body_1" (the crankcase, 190 x 271 x 233), node 9
+// "body_2" (a cylinder block, 161 x 160 x 190; the part the accuracy tests
+// use); ReciprocatingSaw node 0 "body_1" and node 2 "body_5", the two halves
+// of the housing (152 x 42 x 147 each, split at y = 0).
+MeshSource engine_part(int node, const char* name) {
+  return {std::string("engine ") + name, "gltf/2CylinderEngine.glb", node, 0.001, 0, false};
+}
+MeshSource saw_part(int node, const char* name) {
+  return {std::string("saw ") + name, "gltf/ReciprocatingSaw.glb", node, 0.001, 0, false};
+}
 
 struct Scene {
   std::string name;
   std::string description;
+  std::string group;  // "bunny", "cad" or "scaling"
+  MeshSource a, b;    // A fixed at the identity, B held and moved
   PathKind kind = PathKind::Translate;
   double far = 0.05, near = 0.0005;  // minimum distance at the first and the last pose
   bool soft = false;                 // force settings: soft, else hard
   std::string same_as;               // another name for the same scene
+  Vec3 direction{1.0, 0.0, 0.0};     // Translate: B moves along this (unit)
+  bool centre_b_on_a = false;  // offset 0 puts B's box centre on A's; else B stays where its file has it
+  // > 0: the hard settings scaled so that the cutoff is this times the larger
+  // bounding-box diagonal (the bunny pair's 5 mm on 0.249 m is 0.020), and
+  // the path runs from 3 to 0.1 cutoffs: the bunny's 10 would spend two
+  // thirds of the CAD scenes' run far from contact, where the exact
+  // minimum distance and the reference still cost 0.1 s a pose.
+  double cutoff_over_size = 0.0;
 };
 
-const std::vector<Scene>& scenes() {
-  static const std::vector<Scene> all = {
-      {"path-t",
-       "Path T (issue 5): bunny B translated along +x from 50 mm to 0.5 mm from bunny A, linear in x; "
-       "hard force settings, cutoff 5 mm. The paper's hard scene (6.1) is this path.",
-       PathKind::Translate, 0.05, 0.0005, false, "paper-hard"},
-      {"path-r",
-       "Path R (issue 5): bunny B turned by 90 deg * s about normalize(0.3, 1, 0.2) through its centroid "
-       "and moved along +x so that the minimum distance is 50 mm * 0.01^s (bisection on x); hard force "
-       "settings, cutoff 5 mm.",
-       PathKind::Rotate, 0.05, 0.0005, false, ""},
-      {"paper-hard",
-       "The paper's 6.1 benchmark with the hard force settings: path T (50 mm to 0.5 mm), cutoff 5 mm.",
-       PathKind::Translate, 0.05, 0.0005, false, "path-t"},
-      {"paper-soft",
-       "The paper's 6.1 benchmark with the soft force settings: bunny B translated along +x from 50 mm to "
-       "2 mm from bunny A, linear in x; linear force, cutoff 10 mm.",
-       PathKind::Translate, 0.05, 0.002, true, ""},
+constexpr double kCadCutoffOverSize = 0.02;
+constexpr double kCadFarOverCutoff = 3.0;
+
+std::vector<Scene> make_scenes() {
+  std::vector<Scene> all;
+  auto bunny_scene = [&](const char* name, const char* description, PathKind kind, double near, bool soft,
+                         const char* same_as) {
+    Scene s;
+    s.name = name, s.description = description, s.group = "bunny";
+    s.a = s.b = bunny_source();
+    s.kind = kind, s.near = near, s.soft = soft, s.same_as = same_as;
+    all.push_back(s);
   };
+  bunny_scene("path-t",
+              "Path T (issue 5): bunny B translated along +x from 50 mm to 0.5 mm from bunny A, linear in x; "
+              "hard force settings, cutoff 5 mm. The paper's hard scene (6.1) is this path.",
+              PathKind::Translate, 0.0005, false, "paper-hard");
+  bunny_scene(
+      "path-r",
+      "Path R (issue 5): bunny B turned by 90 deg * s about normalize(0.3, 1, 0.2) through its centroid "
+      "and moved along +x so that the minimum distance is 50 mm * 0.01^s (bisection on x); hard force "
+      "settings, cutoff 5 mm.",
+      PathKind::Rotate, 0.0005, false, "");
+  bunny_scene(
+      "paper-hard",
+      "The paper's 6.1 benchmark with the hard force settings: path T (50 mm to 0.5 mm), cutoff 5 mm.",
+      PathKind::Translate, 0.0005, false, "path-t");
+  bunny_scene(
+      "paper-soft",
+      "The paper's 6.1 benchmark with the soft force settings: bunny B translated along +x from 50 mm to "
+      "2 mm from bunny A, linear in x; linear force, cutoff 10 mm.",
+      PathKind::Translate, 0.002, true, "");
+
+  // Large and uneven triangles (the paper's case where the original method
+  // fails). CAD parts in metres; cutoff 2% of the larger diagonal, the
+  // bunny pair's ratio; B moves along a file axis, linear in the offset.
+  auto cad_scene = [&](const char* name, const char* description, MeshSource a, MeshSource b, Vec3 direction,
+                       bool centre) {
+    Scene s;
+    s.name = name, s.description = description, s.group = "cad";
+    s.a = std::move(a), s.b = std::move(b);
+    s.direction = direction, s.centre_b_on_a = centre;
+    s.cutoff_over_size = kCadCutoffOverSize;
+    all.push_back(s);
+  };
+  cad_scene(
+      "cad-engine",
+      "2CylinderEngine parts: the cylinder block (node 9, body_2) pulled out of the crankcase (node 8, "
+      "body_1) along +x from where the two are assembled in the file, linear in the offset from 3 to 0.1 "
+      "cutoffs; hard force settings scaled to a cutoff of 2% of the larger diagonal.",
+      engine_part(8, "body_1"), engine_part(9, "body_2"), Vec3(1.0, 0.0, 0.0), false);
+  cad_scene(
+      "cad-saw",
+      "ReciprocatingSaw housing halves: node 2 (body_5) pulled off node 0 (body_1) along +y from where they "
+      "are assembled in the file, linear in the offset from 3 to 0.1 cutoffs; hard force settings scaled "
+      "to a cutoff of 2% of the larger diagonal.",
+      saw_part(0, "body_1"), saw_part(2, "body_5"), Vec3(0.0, 1.0, 0.0), false);
+  cad_scene(
+      "cad-bunny-engine",
+      "The bunny (B, 27,864 small triangles) against the 2CylinderEngine cylinder block (A, node 9, large "
+      "and thin triangles): B's box centre on A's, then along +x, linear in the offset from 3 to 0.1 "
+      "cutoffs; hard force settings scaled to a cutoff of 2% of the larger diagonal.",
+      engine_part(9, "body_2"), bunny_source(), Vec3(1.0, 0.0, 0.0), true);
+  cad_scene(
+      "cad-saw-engine",
+      "ReciprocatingSaw housing half (B, node 0, body_1) against the 2CylinderEngine cylinder block (A, node "
+      "9): B's box centre on A's, then along +z, linear in the offset from 3 to 0.1 cutoffs; hard force "
+      "settings scaled to a cutoff of 2% of the larger diagonal.",
+      engine_part(9, "body_2"), saw_part(0, "body_1"), Vec3(0.0, 0.0, 1.0), true);
+
+  // Scaling: path T on the bunny at five resolutions, A and B the same mesh.
+  // Decimated by scripts/decimate.py (quadric simplification, so the shape
+  // and the path move a little); subdivided by 1 -> 4 midpoint splits (the
+  // same surface, so the same path and distances).
+  struct Level {
+    const char* name;
+    MeshSource source;
+  };
+  const Level levels[] = {
+      {"scaling-2k", {"bunny 2k (decimated)", "bunny-2k.obj", -1, 1.0, 0, true}},
+      {"scaling-7k", {"bunny 7k (decimated)", "bunny-7k.obj", -1, 1.0, 0, true}},
+      {"scaling-28k", bunny_source()},
+      {"scaling-111k", {"bunny 111k (subdivided once)", "bunny.obj", -1, 1.0, 1, false}},
+      {"scaling-446k", {"bunny 446k (subdivided twice)", "bunny.obj", -1, 1.0, 2, false}},
+  };
+  for (const Level& level : levels) {
+    Scene s;
+    s.name = level.name, s.group = "scaling";
+    s.a = s.b = level.source;
+    s.description =
+        "Scaling: path T (B along +x from 50 mm to 0.5 mm, hard force settings, cutoff 5 mm) with A and "
+        "B both " +
+        level.source.label + ".";
+    all.push_back(s);
+  }
+  return all;
+}
+
+const std::vector<Scene>& scenes() {
+  static const std::vector<Scene> all = make_scenes();
   return all;
 }
 
@@ -226,24 +445,68 @@ PairQuery make_query(const Model& a, const Model& b, const Pose& pose_b, double 
   return {&a.mesh, a.snch.get(), Pose{}, &b.mesh, b.snch.get(), pose_b, cutoff};
 }
 
-// The x at which `at(x)` puts B exactly `gap` from A, by bisection between an
-// overlapping x (0: B's centre on A's) and one far apart. The result never
-// penetrates: no pair is closer than `gap` (to 1e-12 of the bracket).
+// The x at which `at(x) = at(0) + x * dir` puts B exactly `gap` from A. The
+// minimum distance d(x) changes no faster than x, so from an x where the
+// bounding boxes are `gap` apart along dir, steps of x -= d(x) - gap never
+// bring B closer than `gap`; head-on they arrive in two or three steps.
+// Where they crawl (a grazing approach), a bisection between a closer x and
+// the last step finishes. Either way no pair is closer than `gap`, and the
+// result is within 1e-12 of the model sizes of the exact x.
 template <typename PoseAt>
-double x_at_gap(const Model& a, const Model& b, double gap, PoseAt at) {
-  double lo = 0.0, hi = a.size + b.size + gap;
-  for (int i = 0; i < 100 && hi - lo > 1e-12 * hi; ++i) {
+double x_at_gap(const Model& a, const Model& b, double gap, const Vec3& dir, PoseAt at) {
+  const Pose start = at(0.0);
+  double reach_a = -kInf, reach_b = kInf;  // A's box forward along dir, B's box backward
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 pa((corner & 1 ? a.mesh.bounds().max : a.mesh.bounds().min).x,
+                  (corner & 2 ? a.mesh.bounds().max : a.mesh.bounds().min).y,
+                  (corner & 4 ? a.mesh.bounds().max : a.mesh.bounds().min).z);
+    const Vec3 pb((corner & 1 ? b.mesh.bounds().max : b.mesh.bounds().min).x,
+                  (corner & 2 ? b.mesh.bounds().max : b.mesh.bounds().min).y,
+                  (corner & 4 ? b.mesh.bounds().max : b.mesh.bounds().min).z);
+    reach_a = std::max(reach_a, glm::dot(pa, dir));
+    reach_b = std::min(reach_b, glm::dot(start.apply(pb), dir));
+  }
+  double lo = 0.0, hi = std::max(0.0, reach_a - reach_b) + gap;
+  const double tolerance = 1e-12 * (a.size + b.size);
+  double excess = 0.0;
+  for (int i = 0; i < 8; ++i) {
+    const double d = minimum_distance(make_query(a, b, at(hi), 0.0), kInf) - gap;
+    if (!(d > 0.0)) {  // only rounding can do this: back to the last x known to be far enough
+      hi += excess;
+      break;
+    }
+    excess = d;
+    if (excess <= tolerance) return hi;
+    hi -= excess;
+  }
+  if (!any_closer_than(make_query(a, b, at(lo), 0.0), gap))
+    throw UserError(a.name + " / " + b.name + ": the path's offset 0 is not within " + std::to_string(gap) +
+                    " m, so the bisection has no bracket");
+  // A closer x for the bisection's bracket, in growing steps back from hi
+  // (every x that is not closer than `gap` is a better hi).
+  for (double step = std::max(excess, tolerance);; step *= 4.0) {
+    const double x = std::max(lo, hi - step);
+    if (x == lo || any_closer_than(make_query(a, b, at(x), 0.0), gap)) {
+      lo = x;
+      break;
+    }
+    hi = x;
+  }
+  for (int i = 0; i < 100 && hi - lo > tolerance; ++i) {
     const double mid = 0.5 * (lo + hi);
     (any_closer_than(make_query(a, b, at(mid), 0.0), gap) ? lo : hi) = mid;
   }
   return hi;
 }
 
-std::vector<PosePoint> make_path(const Scene& scene, const Model& a, const Model& b, int n) {
+std::vector<PosePoint> make_path(const Scene& scene, double far, double near, const Model& a, const Model& b,
+                                 int n) {
   std::vector<PosePoint> path;
   if (scene.kind == PathKind::Translate) {
-    auto at = [](double x) { return Pose{glm::dmat3(1.0), Vec3(x, 0.0, 0.0)}; };
-    const double x0 = x_at_gap(a, b, scene.far, at), x1 = x_at_gap(a, b, scene.near, at);
+    const Vec3 base = scene.centre_b_on_a ? a.box_centre - b.box_centre : Vec3(0.0);
+    const Vec3 dir = scene.direction;
+    auto at = [&](double x) { return Pose{glm::dmat3(1.0), base + x * dir}; };
+    const double x0 = x_at_gap(a, b, far, dir, at), x1 = x_at_gap(a, b, near, dir, at);
     for (int i = 0; i < n; ++i) {
       const double s = n > 1 ? double(i) / double(n - 1) : 1.0;
       PosePoint p;
@@ -263,8 +526,8 @@ std::vector<PosePoint> make_path(const Scene& scene, const Model& a, const Model
       auto at = [&](double x) { return Pose{r, base + Vec3(x, 0.0, 0.0)}; };
       PosePoint p;
       p.s = s;
-      p.target_gap = scene.far * std::pow(scene.near / scene.far, s);
-      p.x = x_at_gap(a, b, p.target_gap, at);
+      p.target_gap = far * std::pow(near / far, s);
+      p.x = x_at_gap(a, b, p.target_gap, Vec3(1.0, 0.0, 0.0), at);
       p.pose = at(p.x);
       path.push_back(p);
     }
@@ -346,13 +609,20 @@ struct Options {
   std::string scene = "all";
   int poses = 1000;
   std::string out = "bench-results";
-  int reference_every = 1;  // 0: never
-  int local_reps = 5;       // local updates per step and method; the median time is kept
-  int force_reps = 7;       // batches of kForceBatch force evaluations; the median is kept
+  int reference_every = 1;              // 0: never
+  int local_reps = 5;                   // local updates per step and method; the median time is kept
+  int force_reps = 7;                   // batches of kForceBatch force evaluations; the median is kept
+  std::string meshes = "bench-meshes";  // where scripts/decimate.py wrote the decimated bunnies
+  int scaling_poses = 200;              // poses per scaling scene (at most --poses)
+  int scaling_reference_every = 20;     // the reference on the scaling scenes (0: never)
+  int max_triangles = 0;                // skip the scaling levels above this (0: none)
+  int cad_poses = 300;                  // poses per CAD scene (at most --poses)
 };
 
 constexpr int kForceBatch = 100;
-constexpr double kLooseMatch = 0.002;  // the original's feature points match within 2 mm
+// The original's points are feature points: they are also matched within
+// 0.4 cutoffs (2 mm on the bunny pair).
+constexpr double kLooseMatchOverCutoff = 0.4;
 
 // How many of `reference` have a match in `found` and how many of `found` have
 // one in `reference`: closest points on both sides within `tolerance`.
@@ -394,11 +664,15 @@ struct MethodState {
 
 struct SceneRun {
   const Scene* scene = nullptr;
+  const Model* a = nullptr;
+  const Model* b = nullptr;
+  double far = 0.0, near = 0.0;  // the path's first and last minimum distance
   ForceSettings force;
   std::vector<PosePoint> path;
   std::vector<Row> rows;
   double seconds = 0.0;
   double path_seconds = 0.0;
+  int reference_every = 1;
 };
 
 std::vector<const Row*> rows_of(const SceneRun& run, const std::string& method, bool contact_only) {
@@ -514,15 +788,44 @@ const char* kPeerNote =
     "minimum within the cutoff). min-distance is Proxima's own single-pair query (minimum_distance), the "
     "like-for-like peer of FCL's.";
 
-std::string summary_json(const SceneRun& run, const Model& model, const Options& opt) {
+void mesh_json(Json& j, const Model& model, const char* used_as) {
+  j.begin_object();
+  j.field("name", model.name).field("used_as", used_as);
+  j.field("triangles", static_cast<long long>(model.mesh.triangle_count()));
+  j.field("vertices", static_cast<long long>(model.mesh.vertex_count()));
+  j.field("size", model.size);
+  j.field("max_over_median_triangle_area", model.max_over_median_area);
+  const SnchStats& st = model.snch->stats();
+  j.field("snch_nodes", static_cast<long long>(st.nodes))
+      .field("snch_depth", static_cast<long long>(st.depth));
+  j.field("snch_unbounded_leaves", static_cast<long long>(st.unbounded_leaves));
+  j.field("snch_build_ms", median(model.snch_build_seconds) * 1e3);
+  j.field("snch_memory_bytes", st.memory_bytes);
+#ifdef PROX_BENCH_WITH_FCL
+  j.field("fcl_build_ms", median(model.fcl_build_seconds) * 1e3);
+  j.field("fcl_memory_bytes", model.fcl_memory_bytes);
+#endif
+#ifdef PROX_BENCH_WITH_COAL
+  j.field("coal_build_ms", median(model.coal_build_seconds) * 1e3);
+#endif
+  j.end_object();
+}
+
+std::string summary_json(const SceneRun& run, const Options& opt) {
   const Scene& sc = *run.scene;
+  const Model& model = *run.b;
+  const double size = std::max(run.a->size, run.b->size);
   Json j;
   j.begin_object();
-  j.field("scene", sc.name).field("description", sc.description);
+  j.field("scene", sc.name).field("description", sc.description).field("group", sc.group);
   if (!sc.same_as.empty()) j.field("same_as", sc.same_as);
   j.key("path").begin_object();
   j.field("kind", sc.kind == PathKind::Translate ? "translate" : "rotate");
-  j.field("far_gap", sc.far).field("near_gap", sc.near).field("poses", static_cast<int>(run.path.size()));
+  if (sc.kind == PathKind::Translate) {
+    j.key("direction").vec3(sc.direction);
+    j.field("b_box_centre_on_a", sc.centre_b_on_a);
+  }
+  j.field("far_gap", run.far).field("near_gap", run.near).field("poses", static_cast<int>(run.path.size()));
   if (sc.kind == PathKind::Rotate) {
     j.key("axis").vec3(glm::normalize(Vec3(0.3, 1.0, 0.2)));
     j.field("angle_deg", 90.0);
@@ -538,7 +841,7 @@ std::string summary_json(const SceneRun& run, const Model& model, const Options&
   j.field("decay_length", run.force.decay_length);
   j.end_object();
   j.field("cutoff", run.force.cutoff);
-  j.field("reference_every", opt.reference_every).field("local_reps", opt.local_reps);
+  j.field("reference_every", run.reference_every).field("local_reps", opt.local_reps);
   j.field("force_batches", opt.force_reps).field("force_batch_calls", kForceBatch);
   j.field("contact_poses", static_cast<int>(rows_of(run, "precise", true).size()));
   j.field("reference_poses", static_cast<int>(accuracy(run, "precise").poses));
@@ -548,28 +851,24 @@ std::string summary_json(const SceneRun& run, const Model& model, const Options&
 #else
   j.field("fcl", false);
 #endif
-  j.field("coal", false).field("peer_note", kPeerNote);
+#ifdef PROX_BENCH_WITH_COAL
+  j.field("coal", true).field("coal_version", coal_version());
+#else
+  j.field("coal", false);
+#endif
+  j.field("peer_note", kPeerNote);
 
   j.key("meshes").begin_array();
-  j.begin_object();
-  j.field("name", model.name).field("used_as", "A and B");
-  j.field("triangles", static_cast<long long>(model.mesh.triangle_count()));
-  j.field("vertices", static_cast<long long>(model.mesh.vertex_count()));
-  j.field("size", model.size);
-  const SnchStats& st = model.snch->stats();
-  j.field("snch_nodes", static_cast<long long>(st.nodes))
-      .field("snch_depth", static_cast<long long>(st.depth));
-  j.field("snch_unbounded_leaves", static_cast<long long>(st.unbounded_leaves));
-  j.field("snch_build_ms", median(model.snch_build_seconds) * 1e3);
-  j.field("snch_memory_bytes", st.memory_bytes);
-#ifdef PROX_BENCH_WITH_FCL
-  j.field("fcl_build_ms", median(model.fcl_build_seconds) * 1e3);
-  j.field("fcl_memory_bytes", model.fcl_memory_bytes);
-#endif
-  j.end_object();
+  if (run.a == run.b) {
+    mesh_json(j, *run.a, "A and B");
+  } else {
+    mesh_json(j, *run.a, "A");
+    mesh_json(j, *run.b, "B");
+  }
   j.end_array();
 
-  const double tolerance = 1e-9 * model.size;
+  const double tolerance = 1e-9 * size;
+  j.field("size", size).field("loose_match_tolerance", kLooseMatchOverCutoff * run.force.cutoff);
   j.key("methods").begin_object();
   for (const char* m : {"precise", "original"}) {
     j.key(m).begin_object();
@@ -598,7 +897,7 @@ std::string summary_json(const SceneRun& run, const Model& model, const Options&
     j.field("precision_2mm", fraction(a.confirmed_loose, a.found));
     j.field("poses_missing_every_lmd", a.missed_minimum);
     j.field("min_distance_error_max", a.min_error);
-    j.field("min_distance_error_max_over_size", a.min_error / model.size);
+    j.field("min_distance_error_max_over_size", a.min_error / size);
     j.field("force_error_max", a.force_error).field("force_error_median", a.force_error_median);
     j.field("torque_error_max", a.torque_error);
     j.field("local_recall", fraction(a.local_recalled, a.reference));
@@ -611,15 +910,16 @@ std::string summary_json(const SceneRun& run, const Model& model, const Options&
     j.end_object();
     j.end_object();
   }
-  for (const char* m : {"min-distance", "fcl", "reference"}) {
+  for (const char* m : {"min-distance", "fcl", "coal", "reference"}) {
     if (rows_of(run, m, false).empty()) continue;
     j.key(m).begin_object();
     both(j, run, m, "query_ms", &Row::query_ms);
-    if (std::string(m) != "reference") {
+    if (std::string(m) == "coal") {
+      both(j, run, m, "pairs_within_cutoff", &Row::candidates);
+    } else if (std::string(m) != "reference") {
       const auto rows = rows_of(run, m, false);
       j.field("min_distance_error_max", maximum(values(rows, &Row::min_distance_error)));
-      j.field("min_distance_error_max_over_size",
-              maximum(values(rows, &Row::min_distance_error)) / model.size);
+      j.field("min_distance_error_max_over_size", maximum(values(rows, &Row::min_distance_error)) / size);
     } else {
       const Smoothness s = smoothness(rows_of(run, m, false));
       j.key("smoothness").begin_object();
@@ -653,6 +953,13 @@ std::string summary_json(const SceneRun& run, const Model& model, const Options&
       j.field("of_medians", ratio_of_medians(num, "fcl", &Row::query_ms, contact));
       j.end_object();
     }
+    if (!rows_of(run, "coal", false).empty()) {
+      const auto r = pose_ratios(run, "precise", "coal", contact);
+      j.key("precise_over_coal").begin_object();
+      j.field("per_pose_median", median(r)).field("per_pose_p99", percentile(r, 0.99));
+      j.field("of_medians", ratio_of_medians("precise", "coal", &Row::query_ms, contact));
+      j.end_object();
+    }
     j.end_object();
   }
   j.end_object();
@@ -665,11 +972,16 @@ std::string summary_json(const SceneRun& run, const Model& model, const Options&
     j.field("precise_query_over_fcl_per_pose_median_contact",
             median(pose_ratios(run, "precise", "fcl", true)));
   }
+  if (!rows_of(run, "coal", false).empty()) {
+    j.field("precise_query_over_coal_per_pose_median", median(pose_ratios(run, "precise", "coal", false)));
+    j.field("precise_query_over_coal_per_pose_median_contact",
+            median(pose_ratios(run, "precise", "coal", true)));
+  }
   j.field("precise_local_p99_us",
           percentile(values(rows_of(run, "precise", true), &Row::local_ms), 0.99) * 1e3);
   j.field("precise_recall", fraction(pa.recalled, pa.reference));
   j.field("precise_precision", fraction(pa.confirmed, pa.found));
-  j.field("precise_min_distance_error_over_size", pa.min_error / model.size);
+  j.field("precise_min_distance_error_over_size", pa.min_error / size);
   j.end_object();
   j.end_object();
   return j.str() + "\n";
@@ -697,15 +1009,31 @@ std::string csv(const SceneRun& run) {
 
 // ---- the run -------------------------------------------------------------------
 
-SceneRun run_scene(const Scene& scene, const Model& model, const Options& opt) {
+// The scene's force settings; CAD scenes scale the hard ones to their size.
+ForceSettings scene_force(const Scene& scene, const Model& a, const Model& b) {
+  ForceSettings f = scene.soft ? soft_force_settings() : hard_force_settings();
+  if (scene.cutoff_over_size > 0.0) {
+    const double k = scene.cutoff_over_size * std::max(a.size, b.size) / f.cutoff;
+    f.cutoff *= k, f.safety_distance *= k, f.decay_length *= k;
+  }
+  return f;
+}
+
+SceneRun run_scene(const Scene& scene, const Model& a, const Model& b, int poses, int reference_every,
+                   const Options& opt) {
   SceneRun run;
   run.scene = &scene;
-  run.force = scene.soft ? soft_force_settings() : hard_force_settings();
+  run.a = &a, run.b = &b;
+  run.force = scene_force(scene, a, b);
   const double cutoff = run.force.cutoff;
+  run.far = scene.cutoff_over_size > 0.0 ? kCadFarOverCutoff * cutoff : scene.far;
+  run.near = scene.cutoff_over_size > 0.0 ? 0.1 * cutoff : scene.near;
   const auto start = Clock::now();
-  run.path = make_path(scene, model, model, opt.poses);
+  run.path = make_path(scene, run.far, run.near, a, b, poses);
   run.path_seconds = seconds_since(start);
-  const double tolerance = 1e-9 * model.size;
+  run.reference_every = reference_every;
+  const double tolerance = 1e-9 * std::max(a.size, b.size);
+  const double loose_tolerance = kLooseMatchOverCutoff * cutoff;
 
   PairState state;
   MethodState methods[2] = {{Method::Precise, {}, {}, {}}, {Method::Original, {}, {}, {}}};
@@ -716,8 +1044,8 @@ SceneRun run_scene(const Scene& scene, const Model& model, const Options& opt) {
 #endif
   for (std::size_t i = 0; i < run.path.size(); ++i) {
     const PosePoint& p = run.path[i];
-    const PairQuery q = make_query(model, model, p.pose, cutoff);
-    const Vec3 reference_point = p.pose.apply(model.box_centre);
+    const PairQuery q = make_query(a, b, p.pose, cutoff);
+    const Vec3 reference_point = p.pose.apply(b.box_centre);
     Row base;
     base.step = static_cast<int>(i);
     base.s = p.s, base.x = p.x, base.target_gap = p.target_gap;
@@ -777,18 +1105,27 @@ SceneRun run_scene(const Scene& scene, const Model& model, const Options& opt) {
       fr.method = "fcl";
       fcl::DistanceResultd result;
       t0 = Clock::now();
-      const double d =
-          fcl::distance(model.fcl.get(), fcl_a, model.fcl.get(), to_fcl(p.pose), request, result);
+      const double d = fcl::distance(a.fcl.get(), fcl_a, b.fcl.get(), to_fcl(p.pose), request, result);
       fr.query_ms = seconds_since(t0) * 1e3;
       fr.min_distance = d;
       fr.min_distance_error = std::abs(d - exact);  // agreement with Proxima's exact minimum
       run.rows.push_back(fr);
     }
 #endif
+#ifdef PROX_BENCH_WITH_COAL
+    {
+      // Every triangle pair within the cutoff: the pairs go in `candidates`.
+      Row cr = base;
+      cr.method = "coal";
+      const CoalMargin c = coal_margin_collide(*a.coal, *b.coal, p.pose, cutoff);
+      cr.query_ms = c.seconds * 1e3;
+      cr.candidates = double(c.pairs);
+      run.rows.push_back(cr);
+    }
+#endif
 
-    const bool with_reference =
-        opt.reference_every > 0 &&
-        (i % static_cast<std::size_t>(opt.reference_every) == 0 || i + 1 == run.path.size());
+    const bool with_reference = reference_every > 0 && (i % static_cast<std::size_t>(reference_every) == 0 ||
+                                                        i + 1 == run.path.size());
     if (with_reference) {
       Row rr = base;
       rr.method = "reference";
@@ -812,7 +1149,7 @@ SceneRun run_scene(const Scene& scene, const Model& model, const Options& opt) {
         const MethodState& ms = methods[r.method == "precise" ? 0 : 1];
         r.ref_lmds = double(ref.lmds.size());
         const auto strict = match(ref.lmds, ms.current, tolerance);
-        const auto loose = match(ref.lmds, ms.current, kLooseMatch);
+        const auto loose = match(ref.lmds, ms.current, loose_tolerance);
         r.recalled = strict.first, r.confirmed = strict.second;
         r.recalled_loose = loose.first, r.confirmed_loose = loose.second;
         if (!ref.lmds.empty() && !ms.current.empty())
@@ -842,13 +1179,13 @@ std::string fmt(double v, const char* format = "%.3f") {
 void print_summary(const SceneRun& run) {
   const Scene& sc = *run.scene;
   const auto contact_rows = rows_of(run, "precise", true);
-  std::printf("\n== %s: %zu poses (%zu within the %.0f mm cutoff), %.1f s (path %.1f s)\n", sc.name.c_str(),
+  std::printf("\n== %s: %zu poses (%zu within the %.2f mm cutoff), %.1f s (path %.1f s)\n", sc.name.c_str(),
               run.path.size(), contact_rows.size(), run.force.cutoff * 1e3, run.seconds, run.path_seconds);
   std::printf("   %s\n", sc.description.c_str());
   std::printf("   times over the poses in contact: median / p99\n");
   std::printf("   %-13s %19s %17s %17s %19s %15s\n", "method", "global+reduction ms", "global ms",
               "reduction ms", "local update us", "force eval ns");
-  for (const char* m : {"precise", "original", "min-distance", "fcl", "reference"}) {
+  for (const char* m : {"precise", "original", "min-distance", "fcl", "coal", "reference"}) {
     const auto rows = rows_of(run, m, true);
     if (rows.empty()) continue;
     auto pair = [&](double Row::*f, double scale, const char* format) {
@@ -860,7 +1197,7 @@ void print_summary(const SceneRun& run) {
                 pair(&Row::local_ms, 1e3, "%.1f").c_str(), pair(&Row::force_eval_ns, 1.0, "%.0f").c_str());
   }
   std::printf("   %-9s %9s %9s %9s %8s %9s %9s %11s %10s %10s %9s\n", "method", "max LMDs", "max cand",
-              "reduction", "recall", "precision", "recall2mm", "max dmin err", "max |dF| N", "max jump N",
+              "reduction", "recall", "precision", "recall-lo", "max dmin err", "max |dF| N", "max jump N",
               "TV N");
   for (const char* m : {"precise", "original"}) {
     const Accuracy a = accuracy(run, m);
@@ -903,11 +1240,22 @@ void print_summary(const SceneRun& run) {
         fmt(median(md), "%.2f").c_str(),
         fmt(maximum(values(rows_of(run, "fcl", false), &Row::min_distance_error)), "%.1e").c_str());
   }
+  if (!rows_of(run, "coal", false).empty()) {
+    const auto in = pose_ratios(run, "precise", "coal", true);
+    const auto pairs = values(rows_of(run, "coal", true), &Row::candidates);
+    std::printf(
+        "   precise / Coal margin collide (every triangle pair within the cutoff), per pose in contact: "
+        "median "
+        "%s, p99 %s; Coal's pairs in contact: median %s, max %s\n",
+        fmt(median(in), "%.3f").c_str(), fmt(percentile(in, 0.99), "%.3f").c_str(),
+        fmt(median(pairs), "%.0f").c_str(), fmt(maximum(pairs), "%.0f").c_str());
+  }
 }
 
 const char* kUsage =
-    "usage: proxima_bench [--scene NAME|all] [--poses N] [--out DIR] [--reference-every K]\n"
-    "                     [--local-reps R] [--force-reps R] [--list]";
+    "usage: proxima_bench [--scene NAME|GROUP|all] [--poses N] [--out DIR] [--reference-every K]\n"
+    "                     [--local-reps R] [--force-reps R] [--meshes DIR] [--scaling-poses N]\n"
+    "                     [--scaling-reference-every K] [--cad-poses N] [--max-triangles N] [--list]";
 
 [[noreturn]] void usage_error(const std::string& message) { throw UserError(message + "\n" + kUsage); }
 
@@ -929,7 +1277,7 @@ constexpr int kFarBodies = 120;
 
 void run_many_bodies(const Model& model, const Options& opt) {
   const Scene& path_t = scenes().front();
-  const std::vector<PosePoint> path = make_path(path_t, model, model, opt.poses);
+  const std::vector<PosePoint> path = make_path(path_t, path_t.far, path_t.near, model, model, opt.poses);
   // The mesh as arrays again, as an application would hand it to the world.
   std::vector<double> positions;
   std::vector<std::uint32_t> indices;
@@ -1035,9 +1383,20 @@ int run(int argc, char** argv) {
       opt.local_reps = parse_int(next(), "--local-reps", 1);
     else if (a == "--force-reps")
       opt.force_reps = parse_int(next(), "--force-reps", 1);
+    else if (a == "--meshes")
+      opt.meshes = next();
+    else if (a == "--scaling-poses")
+      opt.scaling_poses = parse_int(next(), "--scaling-poses", 2);
+    else if (a == "--scaling-reference-every")
+      opt.scaling_reference_every = parse_int(next(), "--scaling-reference-every", 0);
+    else if (a == "--cad-poses")
+      opt.cad_poses = parse_int(next(), "--cad-poses", 2);
+    else if (a == "--max-triangles")
+      opt.max_triangles = parse_int(next(), "--max-triangles", 0);
     else if (a == "--list") {
-      for (const Scene& s : scenes()) std::printf("%-11s %s\n", s.name.c_str(), s.description.c_str());
-      std::printf("%-11s %s\n", "many-bodies",
+      for (const Scene& s : scenes())
+        std::printf("%-16s [%s] %s\n", s.name.c_str(), s.group.c_str(), s.description.c_str());
+      std::printf("%-16s [bunny] %s\n", "many-bodies",
                   "one tool on path T among 121 static bunnies, all but one out of range");
       return 0;
     } else if (a == "--help" || a == "-h") {
@@ -1046,34 +1405,65 @@ int run(int argc, char** argv) {
     } else
       usage_error("unknown option '" + a + "'");
   }
-  // `all` runs each distinct scene once: paper-hard is path-t.
+  // `all` runs each distinct scene once (paper-hard is path-t); a group name
+  // (bunny, cad, scaling) runs the group.
   std::vector<const Scene*> chosen;
   for (const Scene& s : scenes()) {
-    if (opt.scene == s.name || (opt.scene == "all" && s.name != "paper-hard")) chosen.push_back(&s);
+    if (opt.scene == s.name || opt.scene == s.group || (opt.scene == "all" && s.name != "paper-hard"))
+      chosen.push_back(&s);
   }
-  if (chosen.empty() && opt.scene != "many-bodies")
-    usage_error("--scene: no scene '" + opt.scene + "' (try --list)");
+  const bool many_bodies = opt.scene == "many-bodies" || opt.scene == "bunny" || opt.scene == "all";
+  if (chosen.empty() && !many_bodies) usage_error("--scene: no scene '" + opt.scene + "' (try --list)");
   std::filesystem::create_directories(opt.out);
-
-  const auto model = load_model("bunny.obj");
-  std::printf(
-      "proxima_bench: bunny vs bunny, %u triangles each; SNCH %u nodes, built in %.1f ms (median of %d), "
-      "%.2f MiB",
-      model->mesh.triangle_count(), model->snch->stats().nodes, median(model->snch_build_seconds) * 1e3,
-      kBuildRepetitions, double(model->snch->stats().memory_bytes) / (1 << 20));
-#ifdef PROX_BENCH_WITH_FCL
-  std::printf("; FCL %s OBBRSS BVH built in %.1f ms, %.2f MiB\n", FCL_VERSION,
-              median(model->fcl_build_seconds) * 1e3, double(model->fcl_memory_bytes) / (1 << 20));
+  std::printf("%s\n", kPeerNote);
+#ifdef PROX_BENCH_WITH_COAL
+  std::printf("Coal %s: collide with security_margin = the cutoff, every triangle pair within it.\n",
+              coal_version().c_str());
 #else
-  std::printf("; FCL: not built in (PROX_BENCH_WITH_FCL=OFF)\n");
+  std::printf("Coal: not built in (PROX_BENCH_WITH_COAL=OFF).\n");
 #endif
-  std::printf("%s Coal is not measured yet.\n", kPeerNote);
+#ifdef PROX_BENCH_WITH_FCL
+  std::printf("FCL %s: OBBRSS BVH per mesh, built once.\n", FCL_VERSION);
+#else
+  std::printf("FCL: not built in (PROX_BENCH_WITH_FCL=OFF).\n");
+#endif
 
-  if (opt.scene == "many-bodies" || opt.scene == "all") run_many_bodies(*model, opt);
+  // Meshes are loaded (with their hierarchies) once and shared by the scenes.
+  std::map<std::string, std::shared_ptr<Model>> models;
+  auto model_of = [&](const MeshSource& source) {
+    const std::string key = source.file + "#" + std::to_string(source.part) + "#" +
+                            std::to_string(source.subdivisions) + "#" + std::to_string(source.scale);
+    auto& m = models[key];
+    if (!m) m = load_model(source, opt.meshes);
+    return m;
+  };
+  if (many_bodies) run_many_bodies(*model_of(bunny_source()), opt);
   for (const Scene* s : chosen) {
-    const SceneRun r = run_scene(*s, *model, opt);
+    if (s->group == "scaling") {
+      if (s->a.generated && !std::filesystem::exists(opt.meshes + "/" + s->a.file)) {
+        std::printf(
+            "\n== %s: skipped: %s/%s is missing; scripts/decimate.py writes it (see docs/benchmarks.md)\n",
+            s->name.c_str(), opt.meshes.c_str(), s->a.file.c_str());
+        continue;
+      }
+      // 27,864 triangles, times 4 per subdivision.
+      const long long estimate = 27864LL << (2 * s->a.subdivisions);
+      if (opt.max_triangles > 0 && !s->a.generated && estimate > opt.max_triangles) {
+        std::printf("\n== %s: skipped: about %lld triangles, above --max-triangles %d\n", s->name.c_str(),
+                    estimate, opt.max_triangles);
+        continue;
+      }
+    }
+    const auto a = model_of(s->a), b = model_of(s->b);
+    const bool scaling = s->group == "scaling";
+    const int poses = scaling             ? std::min(opt.poses, opt.scaling_poses)
+                      : s->group == "cad" ? std::min(opt.poses, opt.cad_poses)
+                                          : opt.poses;
+    const int reference_every =
+        scaling ? (opt.reference_every > 0 ? opt.scaling_reference_every : 0) : opt.reference_every;
+    const SceneRun r = run_scene(*s, *a, *b, poses, reference_every, opt);
     write_file(opt.out + "/" + s->name + ".csv", csv(r));
-    write_file(opt.out + "/" + s->name + ".json", summary_json(r, *model, opt));
+    write_file(opt.out + "/" + s->name + ".json", summary_json(r, opt));
     print_summary(r);
   }
   std::printf("\nper-step CSV and summary JSON per scene written to %s/\n", opt.out.c_str());

@@ -5,30 +5,41 @@
 # tables in docs/benchmarks/. Per-step CSV and summary JSON go to
 # build/bench-results/. Extra arguments go to proxima_bench (e.g. --poses 200,
 # --reference-every 10, --scene path-r).
-# Works on a fresh Debian 12 machine; installs what it needs (matplotlib from
-# PyPI into build/bench-venv).
+# Works on a fresh Debian 12 machine; installs what it needs (matplotlib and
+# fast-simplification from PyPI into build/bench-venv, Coal's wheel into
+# build/coal-venv). About 10 minutes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/deps.sh
 need_packages "${CORE_PACKAGES[@]}" "${BENCH_PACKAGES[@]}"
 
 jobs=$(( $(nproc) < 2 ? $(nproc) : 2 ))
+
+# Python for the plots and the decimated bunnies (build/bench-venv), and
+# Coal's wheel (its C++ library and CMake config) in a venv of its own
+# (build/coal-venv). Versions as in docs/dependencies.md.
+bench_venv
+if [ ! -x build/coal-venv/bin/python ]; then
+  python3 -m venv build/coal-venv
+fi
+build/coal-venv/bin/python -c "import coal" 2>/dev/null ||
+  build/coal-venv/bin/pip install --quiet "coal==$COAL_VERSION"
+coal_prefix=$(ls -d build/coal-venv/lib/python3*/site-packages/cmeel.prefix)
+
 cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DPROX_WARNINGS_AS_ERRORS=ON \
-  -DPROX_BUILD_BENCHMARKS=ON -DPROX_BENCH_WITH_FCL=ON >/dev/null
+  -DPROX_BUILD_BENCHMARKS=ON -DPROX_BENCH_WITH_FCL=ON -DPROX_BENCH_WITH_COAL=ON \
+  -DCMAKE_PREFIX_PATH="$PWD/$coal_prefix" >/dev/null
 cmake --build build/release --target proxima_bench -j "$jobs"
 
-if [ ! -x build/bench-venv/bin/python ]; then
-  python3 -m venv build/bench-venv
-fi
-build/bench-venv/bin/python -c "import matplotlib" 2>/dev/null ||
-  build/bench-venv/bin/pip install --quiet matplotlib
+build/bench-venv/bin/python bench/decimate.py "$(assets_dir)/bunny.obj" build/bench-meshes
 
 mkdir -p build/bench-results
 {
   echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
-  echo "commit: $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- sdk 2>/dev/null || echo ' with uncommitted changes in sdk/')"
+  echo "commit: $(git rev-parse --short HEAD 2>/dev/null || echo unknown)$(git diff --quiet HEAD -- sdk bench 2>/dev/null || echo ' with uncommitted changes in sdk/ or bench/')"
   lscpu | grep -E "^(Model name|CPU\(s\)|Thread|Core|Socket|CPU max MHz|Hypervisor vendor|L2 cache|L3 cache):" || true
 } | tee build/bench-results/machine.txt
-echo "== proxima_bench --scene all --out build/bench-results $*"
-build/release/bench/proxima_bench --scene all --out build/bench-results "$@" | tee build/bench-results.txt
+echo "== proxima_bench --scene all --meshes build/bench-meshes --out build/bench-results $*"
+build/release/bench/proxima_bench --scene all --meshes build/bench-meshes --out build/bench-results "$@" |
+  tee build/bench-results.txt
 build/bench-venv/bin/python bench/plot.py build/bench-results docs/benchmarks

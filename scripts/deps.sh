@@ -20,3 +20,21 @@ CORE_PACKAGES=(g++ cmake ninja-build libglm-dev libgtest-dev
 # The scene benchmark's peers and plots (scripts/bench.sh): FCL to measure
 # against (never a dependency of the SDK) and a venv for matplotlib.
 BENCH_PACKAGES=(libbenchmark-dev libfcl-dev python3 python3-venv)
+
+# PyPI packages of the benchmark, pinned (docs/dependencies.md).
+SIMPLIFIER_VERSION=0.2.0  # fast-simplification: the decimated bunnies (bench/decimate.py)
+COAL_VERSION=3.0.3        # coal: the peer behind PROX_BENCH_WITH_COAL (scripts/bench.sh)
+
+# The shared assets beside the repository (PROXIMA_ASSETS overrides).
+assets_dir() { echo "${PROXIMA_ASSETS:-../shared/assets}"; }
+
+# build/bench-venv with the simplifier (and matplotlib unless "--no-plots"):
+# returns non-zero if pip cannot install them.
+bench_venv() {
+  [ -x build/bench-venv/bin/python ] || python3 -m venv build/bench-venv || return 1
+  build/bench-venv/bin/python -c "import fast_simplification" 2>/dev/null ||
+    build/bench-venv/bin/pip install --quiet "fast-simplification==$SIMPLIFIER_VERSION" || return 1
+  [ "${1:-}" = "--no-plots" ] && return 0
+  build/bench-venv/bin/python -c "import matplotlib" 2>/dev/null ||
+    build/bench-venv/bin/pip install --quiet matplotlib
+}
