@@ -1288,6 +1288,21 @@ int parse_int(const std::string& text, const char* what, int lo) {
 
 // ---- many bodies -------------------------------------------------------------
 
+// A model's mesh as arrays again, as an application hands it to a world.
+struct MeshArrays {
+  std::vector<double> positions;
+  std::vector<std::uint32_t> indices;
+};
+MeshArrays arrays_of(const Model& model) {
+  MeshArrays a;
+  for (std::uint32_t v = 0; v < model.mesh.vertex_count(); ++v)
+    a.positions.insert(a.positions.end(),
+                       {model.mesh.vertex(v).x, model.mesh.vertex(v).y, model.mesh.vertex(v).z});
+  for (std::uint32_t t = 0; t < model.mesh.triangle_count(); ++t)
+    a.indices.insert(a.indices.end(), model.mesh.indices(t).begin(), model.mesh.indices(t).end());
+  return a;
+}
+
 // One tool bunny on path T against one static bunny, in worlds side by side
 // on the same poses: alone, and among crowds of more static bunnies on a
 // grid out of range (120, 1,200 and 12,000 of them). The runtime's
@@ -1299,14 +1314,9 @@ constexpr int kCrowds[] = {120, 1200, 12000};
 void run_many_bodies(const Model& model, const Options& opt) {
   const Scene& path_t = scenes().front();
   const std::vector<PosePoint> path = make_path(path_t, path_t.far, path_t.near, model, model, opt.poses);
-  // The mesh as arrays again, as an application would hand it to the world.
-  std::vector<double> positions;
-  std::vector<std::uint32_t> indices;
-  for (std::uint32_t v = 0; v < model.mesh.vertex_count(); ++v)
-    positions.insert(positions.end(),
-                     {model.mesh.vertex(v).x, model.mesh.vertex(v).y, model.mesh.vertex(v).z});
-  for (std::uint32_t t = 0; t < model.mesh.triangle_count(); ++t)
-    indices.insert(indices.end(), model.mesh.indices(t).begin(), model.mesh.indices(t).end());
+  const MeshArrays arrays = arrays_of(model);
+  const std::vector<double>& positions = arrays.positions;
+  const std::vector<std::uint32_t>& indices = arrays.indices;
   auto world_with = [&](int far_bodies) {
     auto world = std::make_unique<runtime::World>(runtime::WorldSettings{});
     runtime::World& w = *world;
@@ -1425,13 +1435,9 @@ void run_many_bodies(const Model& model, const Options& opt) {
 void run_threads(const Model& model, const Options& opt) {
   const Scene& path_t = scenes().front();
   const std::vector<PosePoint> path = make_path(path_t, path_t.far, path_t.near, model, model, opt.poses);
-  std::vector<double> positions;
-  std::vector<std::uint32_t> indices;
-  for (std::uint32_t v = 0; v < model.mesh.vertex_count(); ++v)
-    positions.insert(positions.end(),
-                     {model.mesh.vertex(v).x, model.mesh.vertex(v).y, model.mesh.vertex(v).z});
-  for (std::uint32_t t = 0; t < model.mesh.triangle_count(); ++t)
-    indices.insert(indices.end(), model.mesh.indices(t).begin(), model.mesh.indices(t).end());
+  const MeshArrays arrays = arrays_of(model);
+  const std::vector<double>& positions = arrays.positions;
+  const std::vector<std::uint32_t>& indices = arrays.indices;
   runtime::World world{runtime::WorldSettings{}};
   Status status;
   const runtime::Handle mesh =

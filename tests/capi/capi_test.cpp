@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "expect.h"
+
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -11,24 +13,6 @@
 #include <vector>
 
 namespace {
-
-#define EXPECT_OK(call)                                                                                 \
-  do {                                                                                                  \
-    const proxResult r_ = (call);                                                                       \
-    EXPECT_EQ(r_, PROX_SUCCESS) << #call << ": " << proxResultString(r_) << ": " << proxGetLastError(); \
-  } while (0)
-#define ASSERT_OK(call)                                                                                 \
-  do {                                                                                                  \
-    const proxResult r_ = (call);                                                                       \
-    ASSERT_EQ(r_, PROX_SUCCESS) << #call << ": " << proxResultString(r_) << ": " << proxGetLastError(); \
-  } while (0)
-// The call fails with `code` and the message names `word`.
-#define EXPECT_FAILS(call, code, word)                                                              \
-  do {                                                                                              \
-    EXPECT_EQ((call), (code)) << #call;                                                             \
-    EXPECT_NE(std::string(proxGetLastError()).find(word), std::string::npos)                        \
-        << #call << ": message '" << proxGetLastError() << "' does not mention '" << (word) << "'"; \
-  } while (0)
 
 // A unit cube (8 vertices, 12 triangles) scaled by `s`.
 struct Cube {

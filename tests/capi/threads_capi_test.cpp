@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "expect.h"
+
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -15,23 +17,6 @@
 #include <vector>
 
 namespace {
-
-#define EXPECT_OK(call)                                                                                 \
-  do {                                                                                                  \
-    const proxResult r_ = (call);                                                                       \
-    EXPECT_EQ(r_, PROX_SUCCESS) << #call << ": " << proxResultString(r_) << ": " << proxGetLastError(); \
-  } while (0)
-#define ASSERT_OK(call)                                                                                 \
-  do {                                                                                                  \
-    const proxResult r_ = (call);                                                                       \
-    ASSERT_EQ(r_, PROX_SUCCESS) << #call << ": " << proxResultString(r_) << ": " << proxGetLastError(); \
-  } while (0)
-#define EXPECT_FAILS(call, code, word)                                                              \
-  do {                                                                                              \
-    EXPECT_EQ((call), (code)) << #call;                                                             \
-    EXPECT_NE(std::string(proxGetLastError()).find(word), std::string::npos)                        \
-        << #call << ": message '" << proxGetLastError() << "' does not mention '" << (word) << "'"; \
-  } while (0)
 
 proxPose at(double x, double y = 0, double z = 0) { return {{x, y, z}, {1, 0, 0, 0}}; }
 
