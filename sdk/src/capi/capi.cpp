@@ -811,7 +811,11 @@ proxResult proxWorld_StartThreads(proxWorldId world, const proxThreadsDef* def) 
     s.max_torque_rate = def->maxTorqueRate;
     s.trust_distance = def->trustDistance;
     Status status;
-    if (!w.start_threads(s, status)) fail(PROX_ERROR_INVALID_ARGUMENT, "def: " + status.message());
+    if (!w.start_threads(s, status)) {
+      if (status.code() == StatusCode::InvalidArgument)
+        fail(PROX_ERROR_INVALID_ARGUMENT, "def: " + status.message());
+      fail(PROX_ERROR_INTERNAL, status.message());
+    }
   });
 }
 

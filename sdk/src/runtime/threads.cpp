@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <system_error>
 
 #if defined(__linux__)
 #include <pthread.h>
@@ -113,9 +114,18 @@ bool Threads::start(Status& status) {
   loop_stats_[int(Role::Local)].reset(s.local_rate);
   loop_stats_[int(Role::Global)].reset(s.global_rate);
   stop_.store(false);
-  threads_[int(Role::Global)] = std::thread([this] { global_main(); });
-  threads_[int(Role::Local)] = std::thread([this] { local_main(); });
-  threads_[int(Role::Haptic)] = std::thread([this] { haptic_main(); });
+  try {
+    threads_[int(Role::Global)] = std::thread([this] { global_main(); });
+    threads_[int(Role::Local)] = std::thread([this] { local_main(); });
+    threads_[int(Role::Haptic)] = std::thread([this] { haptic_main(); });
+  } catch (const std::system_error& e) {
+    // The system refused a thread: stop the ones already running.
+    stop_.store(true);
+    for (std::thread& t : threads_)
+      if (t.joinable()) t.join();
+    status = Status(StatusCode::Unsupported, std::string("cannot start the runtime's threads: ") + e.what());
+    return false;
+  }
   started_ = true;
   return true;
 }
