@@ -35,16 +35,6 @@ using detail::descend;
 using detail::Frames;
 using detail::moved;
 
-// Whether every vertex of `other` is more than `cutoff` from the plane of
-// `t` (unit normal `n`; a zero normal proves nothing), all on one side.
-bool beyond_plane(const Triangle& t, const Vec3& n, const Triangle& other, double cutoff) {
-  if (!(glm::dot(n, n) > 0.0)) return false;
-  const double d0 = glm::dot(other.v[0] - t.v[0], n);
-  const double d1 = glm::dot(other.v[1] - t.v[0], n);
-  const double d2 = glm::dot(other.v[2] - t.v[0], n);
-  return (d0 > cutoff && d1 > cutoff && d2 > cutoff) || (d0 < -cutoff && d1 < -cutoff && d2 < -cutoff);
-}
-
 LmdPair make_pair(const PairQuery& q, std::uint32_t ta, std::uint32_t tb, const Vec3& pa_local_a,
                   const Vec3& pb_local_a, double distance, Feature fa, Feature fb) {
   LmdPair r;
@@ -65,6 +55,14 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 }  // namespace
+
+bool beyond_plane(const Triangle& t, const Vec3& n, const Triangle& other, double limit) {
+  if (!(glm::dot(n, n) > 0.0)) return false;
+  const double d0 = glm::dot(other.v[0] - t.v[0], n);
+  const double d1 = glm::dot(other.v[1] - t.v[0], n);
+  const double d2 = glm::dot(other.v[2] - t.v[0], n);
+  return (d0 > limit && d1 > limit && d2 > limit) || (d0 < -limit && d1 < -limit && d2 < -limit);
+}
 
 void global_search_precise(const PairQuery& q, std::vector<LmdPair>& out, GlobalSearchStats& stats) {
   const auto start = std::chrono::steady_clock::now();

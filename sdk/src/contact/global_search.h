@@ -50,4 +50,10 @@ bool any_closer_than(const PairQuery& query, double distance);
 // on purpose; for tests and error measurement.
 void reference_lmds(const PairQuery& query, std::vector<LmdPair>& out);
 
+// Whether every vertex of `other` is more than `limit` from the plane of
+// `t` (unit normal `n`; a zero normal proves nothing), all on one side: then
+// the two triangles are more than `limit` apart. The precise search's and
+// the tracker's cheap lower bound.
+bool beyond_plane(const Triangle& t, const Vec3& n, const Triangle& other, double limit);
+
 }  // namespace prox

@@ -86,6 +86,16 @@ void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalT
     return index;
   };
 
+  // Whether triangles ta of A and tb of B are farther apart than `limit`
+  // by either one's plane.
+  auto plane_separated = [&](std::uint32_t ta_, std::uint32_t tb_, double limit) {
+    const Triangle a = ma.triangle(ta_);
+    const Triangle b = mb.triangle(tb_);
+    const Triangle moved_b{{b_to_a.apply(b.v[0]), b_to_a.apply(b.v[1]), b_to_a.apply(b.v[2])}};
+    return beyond_plane(a, ma.face_normal(ta_), moved_b, limit) ||
+           beyond_plane(moved_b, b_to_a.rotate(mb.face_normal(tb_)), a, limit);
+  };
+
   stats.pairs_in += static_cast<std::uint32_t>(lmds.size());
   next_.clear();
   for (std::uint32_t k = 0; k < lmds.size(); ++k) {
@@ -111,6 +121,16 @@ void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalT
       for (std::uint32_t na : around_a_)
         for (std::uint32_t nb : around_b_) {
           if (na == ta && nb == tb) continue;
+          // A neighbour the plane bound puts farther than the best so far
+          // cannot be the next step (nor intersect): skip its exact
+          // distance unless the cache already has it. The bound is taken
+          // against best_distance itself, a tolerance away from the
+          // acceptance test, so rounding cannot skip a closer pair.
+          if (!original_ && best_distance > 0.0 && find(pair_key(na, nb)) == kMissing &&
+              plane_separated(na, nb, best_distance)) {
+            ++stats.plane_skips;
+            continue;
+          }
           const std::uint32_t e = evaluate(na, nb, k);
           const geometry::TriangleDistance& r = entries_[e].result;
           if (r.intersects || r.distance < best_distance - tolerance) {

@@ -14,6 +14,7 @@ struct LocalTrackingStats {
   std::uint32_t pairs_out = 0;
   std::uint64_t distance_evaluations = 0;  // exact triangle distances computed
   std::uint64_t cache_hits = 0;            // ... and answered from the cache instead
+  std::uint64_t plane_skips = 0;           // ... and proved no closer by a plane bound instead
   std::uint32_t duplicates_dropped = 0;    // walked into another LMD's path or result
   std::uint32_t dropped_out_of_range = 0;  // walked beyond the cutoff or into an intersection
   std::uint32_t steps = 0;                 // moves to a closer neighbouring pair
