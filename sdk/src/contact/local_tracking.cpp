@@ -45,7 +45,7 @@ void LocalTracker::rehash(std::size_t slots) {
   for (std::uint32_t i = 0; i < entries_.size(); ++i) insert(entries_[i].key, i);
 }
 
-void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalTrackingStats& stats) {
+void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalTrackingStats& stats, bool known) {
   const auto start = std::chrono::steady_clock::now();
   // The cache lives for one update (the poses change between updates).
   entries_.clear();
@@ -95,6 +95,30 @@ void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalT
     return beyond_plane(a, ma.face_normal(ta_), moved_b, limit) ||
            beyond_plane(moved_b, b_to_a.rotate(mb.face_normal(tb_)), a, limit);
   };
+
+  if (known && !original_) {
+    // The candidates' results, back in A's frame, as if computed here.
+    const Pose to_a = q.pose_a.inverse();
+    for (std::uint32_t k = 0; k < lmds.size(); ++k) {
+      const LmdPair& p = lmds[k];
+      const std::uint64_t key = pair_key(p.tri_a, p.tri_b);
+      if (find(key) != kMissing) continue;
+      Entry e;
+      e.key = key;
+      e.owner = k;
+      e.result.distance = p.distance;
+      e.result.point_a = to_a.apply(p.point_a);
+      e.result.point_b = to_a.apply(p.point_b);
+      e.result.feature_a = p.feature_a;
+      e.result.feature_b = p.feature_b;
+      const auto index = static_cast<std::uint32_t>(entries_.size());
+      entries_.push_back(e);
+      if (2 * entries_.size() > slots_.size())
+        rehash(2 * slots_.size());
+      else
+        insert(key, index);
+    }
+  }
 
   stats.pairs_in += static_cast<std::uint32_t>(lmds.size());
   next_.clear();

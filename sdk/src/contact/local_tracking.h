@@ -44,7 +44,10 @@ class LocalTracker {
     return t;
   }
 
-  void update(const PairQuery& query, std::vector<LmdPair>& lmds, LocalTrackingStats& stats);
+  // `known`: the input pairs' distances were just computed at the query's
+  // poses (the global search's candidates), so they seed the cache instead
+  // of being computed again.
+  void update(const PairQuery& query, std::vector<LmdPair>& lmds, LocalTrackingStats& stats, bool known = false);
 
  private:
   // The cache: entries in the order computed (indices stay valid while the

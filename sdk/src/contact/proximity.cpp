@@ -23,7 +23,7 @@ void find_lmds(const PairQuery& query, Method method, PairState& state, Proximit
     case Method::Precise:
       global_search_precise(query, result.lmds, result.global);
       result.candidates = static_cast<std::uint32_t>(result.lmds.size());
-      state.precise.update(query, result.lmds, result.reduction[0]);
+      state.precise.update(query, result.lmds, result.reduction[0], /*known=*/true);
       state.precise.update(later_pose ? *later_pose : query, result.lmds, result.reduction[1]);
       break;
     case Method::Original:
