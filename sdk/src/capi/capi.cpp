@@ -146,6 +146,14 @@ void need_stopped(const runtime::World& w) {
 
 // ---- conversions and checks -------------------------------------------------------
 
+// Every def carries the cookie its proxDefault*Def() set; one that does not
+// was filled by hand (and its unset fields would be taken for choices).
+template <typename Def>
+void need_def(const Def& def, const char* maker) {
+  if (def.internalValue != kDefCookie)
+    fail(PROX_ERROR_INVALID_ARGUMENT, std::string("def was not initialised with ") + maker + "()");
+}
+
 template <typename T>
 void need(const T* p, const char* name) {
   if (!p) fail(PROX_ERROR_INVALID_ARGUMENT, std::string(name) + " is NULL");
@@ -359,8 +367,7 @@ proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
     need(def, "def");
     need(world, "world");
     *world = proxWorldId{};
-    if (def->internalValue != kDefCookie)
-      fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultWorldDef()");
+    need_def(*def, "proxDefaultWorldDef");
     if (def->apiVersion != PROX_API_VERSION)
       fail(PROX_ERROR_VERSION_MISMATCH, "def comes from API version " + std::to_string(def->apiVersion) +
                                             ", the library is " + std::to_string(PROX_API_VERSION));
@@ -417,8 +424,7 @@ proxResult proxWorld_CreateMesh(proxWorldId world, const proxMeshDef* def, proxM
     runtime::World& w = world_of(world);
     need_stopped(w);
     need(def, "def");
-    if (def->internalValue != kDefCookie)
-      fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultMeshDef()");
+    need_def(*def, "proxDefaultMeshDef");
     *mesh = add_mesh(world, w, {def->positions, def->vertexCount, def->indices, def->triangleCount});
   });
 }
@@ -497,8 +503,7 @@ proxResult proxWorld_CreateBody(proxWorldId world, const proxBodyDef* def, proxB
     runtime::World& w = world_of(world);
     need_stopped(w);
     need(def, "def");
-    if (def->internalValue != kDefCookie)
-      fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultBodyDef()");
+    need_def(*def, "proxDefaultBodyDef");
     runtime::World* mesh_world = nullptr;
     const runtime::Handle mesh = mesh_of(def->mesh, mesh_world);
     if (mesh_world != &w) fail(PROX_ERROR_INVALID_HANDLE, "def->mesh belongs to another world");
@@ -683,8 +688,7 @@ proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def) {
       w->set_device(h, runtime::Device{});
       return;
     }
-    if (def->internalValue != kDefCookie)
-      fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultDeviceDef()");
+    need_def(*def, "proxDefaultDeviceDef");
     if (!def->readPose) fail(PROX_ERROR_INVALID_ARGUMENT, "def->readPose is NULL");
     auto adapter = std::make_shared<DeviceAdapter>(*def);
     runtime::Device d;
@@ -710,8 +714,7 @@ proxResult proxWorld_CreateScriptedDevice(proxWorldId world, const proxScriptedD
     *device = proxScriptedDeviceId{};
     runtime::World& w = world_of(world);
     need(def, "def");
-    if (def->internalValue != kDefCookie)
-      fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultScriptedDeviceDef()");
+    need_def(*def, "proxDefaultScriptedDeviceDef");
     if (def->poseCount < 1) fail(PROX_ERROR_INVALID_ARGUMENT, "def->poseCount must be >= 1");
     need(def->poses, "def->poses");
     need_positive(def->secondsPerPose, "def->secondsPerPose");
@@ -795,8 +798,7 @@ proxResult proxWorld_StartThreads(proxWorldId world, const proxThreadsDef* def) 
   return guard("proxWorld_StartThreads", [&] {
     runtime::World& w = world_of(world);
     need(def, "def");
-    if (def->internalValue != kDefCookie)
-      fail(PROX_ERROR_INVALID_ARGUMENT, "def was not initialised with proxDefaultThreadsDef()");
+    need_def(*def, "proxDefaultThreadsDef");
     if (w.running()) fail(PROX_ERROR_BUSY, "the world's threads are already running");
     runtime::ThreadSettings s;
     s.haptic_rate = def->hapticRate;
