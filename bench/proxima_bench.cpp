@@ -652,11 +652,9 @@ double time_force(const ForceSettings& force, const std::vector<LmdPair>& lmds, 
                   const Vec3& reference_local, int batches) {
   runtime::ContactSnapshot snapshot;
   const Pose to_local = pose.inverse();
-  for (const LmdPair& p : lmds) {
-    const Vec3 d = p.point_b - p.point_a;
-    const double len = glm::length(d);
-    if (len > 0.0) snapshot.contacts.push_back({to_local.apply(p.point_b), p.point_a, d / len, p.distance});
-  }
+  runtime::HapticContact c;
+  for (const LmdPair& p : lmds)
+    if (runtime::to_haptic_contact(p, to_local, c)) snapshot.contacts.push_back(c);
   snapshot.tool_pose = pose;
   runtime::SafetyFilter gate;
   std::vector<double> ns;
@@ -1449,13 +1447,7 @@ void run_threads(const Model& model, const Options& opt) {
   const runtime::Handle tool =
       world.create_body(mesh, runtime::BodyType::Tool, path.front().pose, model.centroid);
   std::vector<runtime::ScriptedPose> poses;
-  for (const PosePoint& p : path) {
-    const glm::dquat q = glm::quat_cast(p.pose.rotation);
-    runtime::ScriptedPose sp;
-    sp.position = p.pose.translation;
-    sp.rotation[0] = q.w, sp.rotation[1] = q.x, sp.rotation[2] = q.y, sp.rotation[3] = q.z;
-    poses.push_back(sp);
-  }
+  for (const PosePoint& p : path) poses.push_back(runtime::ScriptedPose::of(p.pose));
   constexpr double kSecondsPerPose = 0.003, kHold = 0.5;
   runtime::ScriptedDevice device(poses, kSecondsPerPose, false);
   world.set_device(tool, device.device());

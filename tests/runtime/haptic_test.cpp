@@ -27,8 +27,9 @@ ContactSnapshot snapshot_of(const std::vector<LmdPair>& lmds, const Pose& tool_p
   ContactSnapshot s;
   const Pose to_local = tool_pose.inverse();
   for (const LmdPair& p : lmds) {
-    const Vec3 d = p.point_b - p.point_a;
-    s.contacts.push_back({to_local.apply(p.point_b), p.point_a, d / glm::length(d), p.distance});
+    HapticContact c;
+    EXPECT_TRUE(to_haptic_contact(p, to_local, c)) << "LMDs are never touching";
+    s.contacts.push_back(c);
   }
   s.tool_pose = tool_pose;
   s.sequence = 1;

@@ -141,19 +141,11 @@ class ThreadsTest : public ::testing::Test {
     if (world_) world_->stop_threads();
   }
 
-  static ScriptedPose scripted(const Pose& p) {
-    const glm::dquat q = glm::quat_cast(p.rotation);
-    ScriptedPose s;
-    s.position = p.translation;
-    s.rotation[0] = q.w, s.rotation[1] = q.x, s.rotation[2] = q.y, s.rotation[3] = q.z;
-    return s;
-  }
-
   // Starts the threads with the tool approaching from far to near in half a
   // second, then held there; returns once the force has settled at rest.
   void start_and_settle(FaultyDevice*& faulty) {
-    scripted_ = std::make_unique<ScriptedDevice>(std::vector<ScriptedPose>{scripted(far_), scripted(near_)},
-                                                 0.5, false);
+    scripted_ = std::make_unique<ScriptedDevice>(
+        std::vector<ScriptedPose>{ScriptedPose::of(far_), ScriptedPose::of(near_)}, 0.5, false);
     faulty_ = std::make_unique<FaultyDevice>(*scripted_);
     faulty = faulty_.get();
     world_->set_device(tool_, faulty_->device());

@@ -270,30 +270,17 @@ struct DeviceAdapter {
 // The scripted device seen through the C device callbacks.
 struct ScriptedTrampoline {
   static proxBool read(void* user, proxPose* pose) {
-    auto* d = static_cast<runtime::ScriptedDevice*>(user);
-    const runtime::Device device = d->device();
     runtime::DevicePose p{};
-    if (!device.read_pose(device.user, &p)) return 0;
+    if (!static_cast<runtime::ScriptedDevice*>(user)->read_pose(&p)) return 0;
     *pose = {{p.position[0], p.position[1], p.position[2]},
              {p.rotation[0], p.rotation[1], p.rotation[2], p.rotation[3]}};
     return 1;
   }
   static void write(void* user, const proxWrench* w) {
-    auto* d = static_cast<runtime::ScriptedDevice*>(user);
-    const runtime::Device device = d->device();
-    const runtime::DeviceWrench out{
-        {w->force.x, w->force.y, w->force.z}, {w->torque.x, w->torque.y, w->torque.z}, w->clipped != 0};
-    device.write_wrench(device.user, &out);
+    static_cast<runtime::ScriptedDevice*>(user)->write_wrench(
+        {{w->force.x, w->force.y, w->force.z}, {w->torque.x, w->torque.y, w->torque.z}, w->clipped != 0});
   }
 };
-
-runtime::ScriptedPose scripted(const Pose& pose) {
-  const glm::dquat q = glm::quat_cast(pose.rotation);
-  runtime::ScriptedPose p;
-  p.position = pose.translation;
-  p.rotation[0] = q.w, p.rotation[1] = q.x, p.rotation[2] = q.y, p.rotation[3] = q.z;
-  return p;
-}
 
 proxScriptedDeviceId add_scripted(proxWorldId world, runtime::World& w,
                                   std::vector<runtime::ScriptedPose> poses, double seconds_per_pose,
@@ -720,7 +707,8 @@ proxResult proxWorld_CreateScriptedDevice(proxWorldId world, const proxScriptedD
     need_positive(def->secondsPerPose, "def->secondsPerPose");
     std::vector<runtime::ScriptedPose> path(static_cast<std::size_t>(def->poseCount));
     for (int32_t i = 0; i < def->poseCount; ++i)
-      path[std::size_t(i)] = scripted(to_pose(def->poses[i], "def->poses[" + std::to_string(i) + "]"));
+      path[std::size_t(i)] =
+          runtime::ScriptedPose::of(to_pose(def->poses[i], "def->poses[" + std::to_string(i) + "]"));
     *device = add_scripted(world, w, std::move(path), def->secondsPerPose, def->loop != 0);
   });
 }

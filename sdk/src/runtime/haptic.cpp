@@ -33,6 +33,14 @@ bool clamp_length(Vec3& v, double limit) {
 
 }  // namespace
 
+bool to_haptic_contact(const LmdPair& lmd, const Pose& tool_to_local, HapticContact& out) {
+  const Vec3 d = lmd.point_b - lmd.point_a;
+  const double len = glm::length(d);
+  if (!(len > 0.0)) return false;
+  out = {tool_to_local.apply(lmd.point_b), lmd.point_a, d / len, lmd.distance};
+  return true;
+}
+
 std::uint64_t snapshot_checksum(const ContactSnapshot& snapshot) {
   auto bits = [](double v) {
     std::uint64_t u;

@@ -22,6 +22,11 @@ struct HapticContact {
   double distance = 0.0;       // when tracked
 };
 
+// An LMD pair (A the other body, B the tool) as the haptic loop keeps it;
+// `tool_to_local` is the inverse of the tool's pose it was tracked at. False
+// for a pair with no direction (touching: distance 0).
+bool to_haptic_contact(const LmdPair& lmd, const Pose& tool_to_local, HapticContact& out);
+
 // A tool's contacts as the local tracking thread last saw them. Its storage
 // is reserved once, before the threads start; the writer fills at most
 // capacity() contacts (the closest ones) and never reallocates.

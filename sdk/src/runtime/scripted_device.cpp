@@ -23,6 +23,14 @@ glm::dquat quat(const ScriptedPose& p) {
 
 }  // namespace
 
+ScriptedPose ScriptedPose::of(const Pose& pose) {
+  const glm::dquat q = glm::quat_cast(pose.rotation);
+  ScriptedPose p;
+  p.position = pose.translation;
+  p.rotation[0] = q.w, p.rotation[1] = q.x, p.rotation[2] = q.y, p.rotation[3] = q.z;
+  return p;
+}
+
 ScriptedDevice::ScriptedDevice(std::vector<ScriptedPose> poses, double seconds_per_pose, bool loop)
     : poses_(std::move(poses)), seconds_per_pose_(seconds_per_pose), loop_(loop) {
   if (poses_.empty()) throw std::invalid_argument("a scripted path needs at least one pose");
@@ -32,8 +40,12 @@ ScriptedDevice::ScriptedDevice(std::vector<ScriptedPose> poses, double seconds_p
 
 Device ScriptedDevice::device() {
   Device d;
-  d.read_pose = &ScriptedDevice::read;
-  d.write_wrench = &ScriptedDevice::write;
+  d.read_pose = [](void* user, DevicePose* pose) {
+    return static_cast<ScriptedDevice*>(user)->read_pose(pose);
+  };
+  d.write_wrench = [](void* user, const DeviceWrench* w) {
+    static_cast<ScriptedDevice*>(user)->write_wrench(*w);
+  };
   d.user = this;
   return d;
 }
@@ -55,43 +67,39 @@ ScriptedPose ScriptedDevice::pose_at(double t) const {
   return p;
 }
 
-bool ScriptedDevice::read(void* user, DevicePose* pose) {
-  auto* self = static_cast<ScriptedDevice*>(user);
+bool ScriptedDevice::read_pose(DevicePose* pose) {
   const std::int64_t now = now_ns();
-  std::int64_t start = self->start_ns_.load(std::memory_order_relaxed);
-  if (start < 0) self->start_ns_.store(start = now, std::memory_order_relaxed);
+  std::int64_t start = start_ns_.load(std::memory_order_relaxed);
+  if (start < 0) start_ns_.store(start = now, std::memory_order_relaxed);
   const double t = double(now - start) * 1e-9;
-  const ScriptedPose p = self->pose_at(t);
+  const ScriptedPose p = pose_at(t);
   for (int k = 0; k < 3; ++k) pose->position[k] = p.position[k];
   for (int k = 0; k < 4; ++k) pose->rotation[k] = p.rotation[k];
-  const double progress = t / self->seconds_per_pose_;
-  self->progress_.store(self->loop_ ? progress : std::min(progress, double(self->poses_.size() - 1)),
-                        std::memory_order_relaxed);
-  self->reads_.fetch_add(1, std::memory_order_relaxed);
+  const double progress = t / seconds_per_pose_;
+  progress_.store(loop_ ? progress : std::min(progress, double(poses_.size() - 1)),
+                  std::memory_order_relaxed);
+  reads_.fetch_add(1, std::memory_order_relaxed);
   return true;
 }
 
-void ScriptedDevice::write(void* user, const DeviceWrench* w) {
-  auto* self = static_cast<ScriptedDevice*>(user);
-  const Vec3 f(w->force[0], w->force[1], w->force[2]);
-  const Vec3 t(w->torque[0], w->torque[1], w->torque[2]);
+void ScriptedDevice::write_wrench(const DeviceWrench& w) {
+  const Vec3 f(w.force[0], w.force[1], w.force[2]);
+  const Vec3 t(w.torque[0], w.torque[1], w.torque[2]);
   const bool finite = std::isfinite(f.x + f.y + f.z + t.x + t.y + t.z);
-  if (!finite) self->finite_.store(false, std::memory_order_relaxed);
-  const Vec3 previous(self->last_[0].load(std::memory_order_relaxed),
-                      self->last_[1].load(std::memory_order_relaxed),
-                      self->last_[2].load(std::memory_order_relaxed));
+  if (!finite) finite_.store(false, std::memory_order_relaxed);
+  const Vec3 previous(last_[0].load(std::memory_order_relaxed), last_[1].load(std::memory_order_relaxed),
+                      last_[2].load(std::memory_order_relaxed));
   auto raise = [](std::atomic<double>& max, double v) {
     if (!(v <= max.load(std::memory_order_relaxed))) max.store(v, std::memory_order_relaxed);
   };
-  raise(self->max_force_, glm::length(f));
-  raise(self->max_torque_, glm::length(t));
-  if (self->writes_.load(std::memory_order_relaxed) > 0)
-    raise(self->max_force_step_, glm::length(f - previous));
+  raise(max_force_, glm::length(f));
+  raise(max_torque_, glm::length(t));
+  if (writes_.load(std::memory_order_relaxed) > 0) raise(max_force_step_, glm::length(f - previous));
   for (int k = 0; k < 3; ++k) {
-    self->last_[k].store(f[k], std::memory_order_relaxed);
-    self->last_[3 + k].store(t[k], std::memory_order_relaxed);
+    last_[k].store(f[k], std::memory_order_relaxed);
+    last_[3 + k].store(t[k], std::memory_order_relaxed);
   }
-  self->writes_.fetch_add(1, std::memory_order_release);
+  writes_.fetch_add(1, std::memory_order_release);
 }
 
 ScriptedRecord ScriptedDevice::record() const {

@@ -16,6 +16,8 @@ namespace prox::runtime {
 struct ScriptedPose {
   Vec3 position{0.0};
   double rotation[4] = {1.0, 0.0, 0.0, 0.0};  // unit quaternion w, x, y, z
+
+  static ScriptedPose of(const Pose& pose);
 };
 
 // What the device has been handed so far.
@@ -38,14 +40,14 @@ class ScriptedDevice {
   ScriptedDevice(std::vector<ScriptedPose> poses, double seconds_per_pose, bool loop);
 
   Device device();
+  // What device()'s callbacks do, for callers that hold the device itself.
+  bool read_pose(DevicePose* pose);
+  void write_wrench(const DeviceWrench& wrench);
   ScriptedRecord record() const;
   // The pose at `t` seconds into the path.
   ScriptedPose pose_at(double t) const;
 
  private:
-  static bool read(void* user, DevicePose* pose);
-  static void write(void* user, const DeviceWrench* wrench);
-
   std::vector<ScriptedPose> poses_;
   double seconds_per_pose_;
   bool loop_;

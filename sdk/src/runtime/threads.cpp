@@ -61,7 +61,7 @@ Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), 
                    (corner & 4) ? box.max.z : box.min.z);
       tool->radius = std::max(tool->radius, glm::length(p - b.reference_point));
     }
-    const PoseSample start{b.pose, 0.0, 1};
+    const PoseSample start{b.pose, 0.0};
     tool->pose.store(start);
     tool->game_pose.store(start);
     tool->wrench.store({b.wrench});
@@ -212,17 +212,15 @@ void Threads::haptic_main() {
 
 void Threads::haptic_tick(Tool& tool, double t, double dt) {
   PoseSample sample;
-  bool ok = false;
+  bool ok = true;
   if (tool.device.attached()) {
     DevicePose d{};
     ok = tool.device.read_pose(tool.device.user, &d) && pose_from_device(d, sample.pose);
   } else {
     sample = tool.game_pose.load();
-    ok = sample.valid != 0;
   }
   if (ok) {
     sample.time = t;
-    sample.valid = 1;
     tool.pose.store(sample);
   } else {
     count(invalid_poses_);
@@ -296,7 +294,6 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
   }
 
   const PoseSample sample = tool.pose.load();
-  if (!sample.valid) return;
   std::size_t total = 0;
   for (LocalPair& lp : tool.local_pairs) {
     const World::BodySlot& other = world_.bodies_[lp.other];
@@ -322,12 +319,9 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
   }
   const Pose to_local = sample.pose.inverse();
   s.contacts.clear();
-  for (const LmdPair* p : scratch) {
-    const Vec3 d = p->point_b - p->point_a;
-    const double len = glm::length(d);
-    if (!(len > 0.0)) continue;
-    s.contacts.push_back({to_local.apply(p->point_b), p->point_a, d / len, p->distance});
-  }
+  HapticContact c;
+  for (const LmdPair* p : scratch)
+    if (to_haptic_contact(*p, to_local, c)) s.contacts.push_back(c);
   s.tool_pose = sample.pose;
   s.time = sample.time;
   s.sequence = ++tool.published;
@@ -407,7 +401,7 @@ void Threads::global_main() {
 
 void Threads::set_tool_pose(std::uint32_t body, const Pose& pose) {
   const int k = tool_of_body_[body];
-  if (k >= 0) tools_[std::size_t(k)]->game_pose.store({pose, now(), 1});
+  if (k >= 0) tools_[std::size_t(k)]->game_pose.store({pose, now()});
 }
 
 Pose Threads::tool_pose(std::uint32_t body) const {

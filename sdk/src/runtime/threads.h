@@ -87,10 +87,10 @@ class Threads {
   void stall(Role role, bool stalled) { stalled_[int(role)].store(stalled, std::memory_order_relaxed); }
 
  private:
+  // Both pose seqlocks start with the body's pose, so a sample is always valid.
   struct PoseSample {
     Pose pose;
     double time = 0.0;  // steady-clock seconds when read
-    std::uint32_t valid = 0;
   };
   struct WrenchSample {
     Wrench wrench;
