@@ -16,11 +16,21 @@ struct GlobalSearchStats {
   std::uint64_t rejected_g3 = 0;            // cones miss the lines between the spheres
   std::uint64_t leaf_pairs = 0;             // triangle pairs reaching the leaf tests
   std::uint64_t visibility_rejections = 0;  // precise: culled by the visibility pre-test
-  std::uint64_t plane_rejections = 0;       // precise: one triangle beyond the other's plane by more than the cutoff
-  std::uint64_t normal_rejections = 0;      // original: culled by the G5 normal check
-  std::uint64_t distance_evaluations = 0;   // exact distances (precise) or 7x7 samplings (original)
-  std::uint64_t candidates = 0;             // pairs output, before any reduction
+  std::uint64_t plane_rejections =
+      0;  // precise: one triangle beyond the other's plane by more than the cutoff
+  std::uint64_t normal_rejections = 0;     // original: culled by the G5 normal check
+  std::uint64_t distance_evaluations = 0;  // exact distances (precise) or 7x7 samplings (original)
+  std::uint64_t candidates = 0;            // pairs output, before any reduction
   double seconds = 0.0;
+
+  GlobalSearchStats& operator+=(const GlobalSearchStats& s) {
+    node_pairs += s.node_pairs, rejected_g1 += s.rejected_g1, rejected_g2 += s.rejected_g2;
+    rejected_g3 += s.rejected_g3, leaf_pairs += s.leaf_pairs,
+        visibility_rejections += s.visibility_rejections;
+    plane_rejections += s.plane_rejections, normal_rejections += s.normal_rejections;
+    distance_evaluations += s.distance_evaluations, candidates += s.candidates, seconds += s.seconds;
+    return *this;
+  }
 };
 
 // The improved method: G1, G2, G3.a/b on node pairs; at leaves the visibility

@@ -19,6 +19,13 @@ struct LocalTrackingStats {
   std::uint32_t dropped_out_of_range = 0;  // walked beyond the cutoff or into an intersection
   std::uint32_t steps = 0;                 // moves to a closer neighbouring pair
   double seconds = 0.0;
+
+  LocalTrackingStats& operator+=(const LocalTrackingStats& s) {
+    pairs_in += s.pairs_in, pairs_out += s.pairs_out, distance_evaluations += s.distance_evaluations;
+    cache_hits += s.cache_hits, plane_skips += s.plane_skips, duplicates_dropped += s.duplicates_dropped;
+    dropped_out_of_range += s.dropped_out_of_range, steps += s.steps, seconds += s.seconds;
+    return *this;
+  }
 };
 
 // Updates a set of LMD pairs to the query's poses. Each pair walks to the
@@ -47,7 +54,8 @@ class LocalTracker {
   // `known`: the input pairs' distances were just computed at the query's
   // poses (the global search's candidates), so they seed the cache instead
   // of being computed again.
-  void update(const PairQuery& query, std::vector<LmdPair>& lmds, LocalTrackingStats& stats, bool known = false);
+  void update(const PairQuery& query, std::vector<LmdPair>& lmds, LocalTrackingStats& stats,
+              bool known = false);
 
  private:
   // The cache: entries in the order computed (indices stay valid while the

@@ -20,6 +20,13 @@ struct PolylineStats {
   std::uint64_t coplanar_pairs = 0;  // overlapping in one plane: a region, not a curve; not in the polylines
   std::uint64_t segments = 0;
   double seconds = 0.0;
+
+  PolylineStats& operator+=(const PolylineStats& s) {
+    node_pairs += s.node_pairs, triangle_pairs += s.triangle_pairs,
+        intersecting_pairs += s.intersecting_pairs;
+    coplanar_pairs += s.coplanar_pairs, segments += s.segments, seconds += s.seconds;
+    return *this;
+  }
 };
 
 // Where the surfaces of the two meshes cross: the intersection segments of

@@ -17,40 +17,6 @@ std::uint32_t free_slot(std::vector<Slot>& slots) {
   return static_cast<std::uint32_t>(slots.size() - 1);
 }
 
-void add(GlobalSearchStats& sum, const GlobalSearchStats& s) {
-  sum.node_pairs += s.node_pairs;
-  sum.rejected_g1 += s.rejected_g1;
-  sum.rejected_g2 += s.rejected_g2;
-  sum.rejected_g3 += s.rejected_g3;
-  sum.leaf_pairs += s.leaf_pairs;
-  sum.visibility_rejections += s.visibility_rejections;
-  sum.plane_rejections += s.plane_rejections;
-  sum.normal_rejections += s.normal_rejections;
-  sum.distance_evaluations += s.distance_evaluations;
-  sum.candidates += s.candidates;
-  sum.seconds += s.seconds;
-}
-
-void add(LocalTrackingStats& sum, const LocalTrackingStats& s) {
-  sum.pairs_in += s.pairs_in;
-  sum.pairs_out += s.pairs_out;
-  sum.distance_evaluations += s.distance_evaluations;
-  sum.cache_hits += s.cache_hits;
-  sum.duplicates_dropped += s.duplicates_dropped;
-  sum.dropped_out_of_range += s.dropped_out_of_range;
-  sum.steps += s.steps;
-  sum.seconds += s.seconds;
-}
-
-void add(PolylineStats& sum, const PolylineStats& s) {
-  sum.node_pairs += s.node_pairs;
-  sum.triangle_pairs += s.triangle_pairs;
-  sum.intersecting_pairs += s.intersecting_pairs;
-  sum.coplanar_pairs += s.coplanar_pairs;
-  sum.segments += s.segments;
-  sum.seconds += s.seconds;
-}
-
 }  // namespace
 
 World::World(const WorldSettings& settings) : settings_(settings) {
@@ -277,7 +243,7 @@ void World::search_tool(std::uint32_t t, Broadphase& bp, PairMap& pairs, std::ve
       pair.body_version = poses[o].version;
       ++stats.pairs_searched;
       stats.candidates += r.candidates;
-      add(stats.search, r.global);
+      stats.search += r.global;
       for (const LocalTrackingStats& pass : r.reduction) {
         stats.reduction_seconds += pass.seconds;
         stats.reduction_cache_hits += pass.cache_hits;
@@ -349,7 +315,7 @@ void World::track() {
       LocalTracker& tracker = settings_.method == Method::Original ? pair.state.original : pair.state.precise;
       LocalTrackingStats local;
       tracker.update(q, pair.lmds, local);
-      add(track_stats_.local, local);
+      track_stats_.local += local;
       ++track_stats_.pairs;
       for (const LmdPair& p : pair.lmds) {
         tool.contacts.push_back({o, p});
@@ -394,7 +360,7 @@ void World::intersections(Handle tool_handle, std::vector<std::pair<std::uint32_
     std::vector<Polyline> lines;
     PolylineStats stats;
     intersection_polylines(q, lines, stats);
-    add(tool.intersection_stats, stats);
+    tool.intersection_stats += stats;
     for (Polyline& line : lines) out.emplace_back(o, std::move(line));
   }
 }
