@@ -492,8 +492,11 @@ double diagonal(proxMeshId mesh) {
 }
 
 // Path T of docs/cli.md: B translated along +x from where the minimum
-// distance to A is `far` to where it is `near`, linear in x. Bisection on the
-// exact minimum distance; leaves B where it was.
+// distance to A is kPathFar to where it is kPathNear, linear in x.
+constexpr double kPathFar = 0.05, kPathNear = 0.0005;
+
+// Where B's x puts it `gap` from A: bisection on the exact minimum
+// distance; leaves B where it was.
 double x_at_gap(const Scene& scene, double gap) {
   proxPose before;
   check(proxBody_GetPose(scene.b(), &before));
@@ -600,7 +603,7 @@ int path(Args& args) {
     std::printf("path from %s: %zu poses of %s against %s, cutoff %.3g m\n", poses_path.c_str(), poses.size(),
                 path_b.c_str(), path_a.c_str(), cutoff);
   } else {
-    const double far = 0.05, near = 0.0005;
+    const double far = kPathFar, near = kPathNear;
     const double x0 = x_at_gap(*scene, far), x1 = x_at_gap(*scene, near);
     for (int i = 0; i < steps; ++i) poses.push_back(translation(x0 + (x1 - x0) * i / (steps - 1)));
     std::printf(
@@ -736,7 +739,7 @@ int run(Args& args) {
                 path_b.c_str(), poses_path.c_str(), poses.size(), seconds, hold, path_a.c_str(),
                 settings.cutoff);
   } else {
-    const double far = 0.05, near = 0.0005;
+    const double far = kPathFar, near = kPathNear;
     const proxPose ends[2] = {translation(x_at_gap(scene, far)), translation(x_at_gap(scene, near))};
     proxScriptedDeviceDef def = proxDefaultScriptedDeviceDef();
     def.poses = ends;
