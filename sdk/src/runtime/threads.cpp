@@ -373,14 +373,24 @@ void Threads::global_main() {
     }
     StepStats stats;
     for (auto& tool : tools_) {
+      const int searched_before = stats.pairs_searched;
       world_.search_tool(tool->body, broadphase, pairs, in_range, stats);
+      for (const PairInRange& p : in_range) stats.contacts += static_cast<int>(p.slot->lmds.size());
+      // Nothing searched and the same pairs in range: the local thread
+      // already has this answer (and has tracked it further); don't make it
+      // merge the same set again.
+      bool same_pairs = in_range.size() == tool->published_others.size();
+      for (std::size_t i = 0; same_pairs && i < in_range.size(); ++i)
+        same_pairs = in_range[i].other == tool->published_others[i];
+      if (stats.pairs_searched == searched_before && same_pairs) continue;
+      tool->published_others.clear();
+      for (const PairInRange& p : in_range) tool->published_others.push_back(p.other);
       GlobalResult& r = tool->global.back();
       r.pairs.resize(in_range.size());
       for (std::size_t i = 0; i < in_range.size(); ++i) {
         r.pairs[i].other = in_range[i].other;
         r.pairs[i].other_pose = poses[in_range[i].other].pose;
         r.pairs[i].lmds = in_range[i].slot->lmds;
-        stats.contacts += static_cast<int>(in_range[i].slot->lmds.size());
       }
       r.sequence = ++sequence;
       tool->global.publish();

@@ -114,16 +114,17 @@ class Threads {
     std::uint32_t body = 0;
     Device device;
     Vec3 reference_local{0.0};
-    double radius = 0.0;                      // of the tool's bounds about the reference point
-    SeqLock<PoseSample> pose;                 // haptic -> local, global, game
-    SeqLock<PoseSample> game_pose;            // game -> haptic, for tools no device holds
-    SeqLock<WrenchSample> wrench;             // haptic -> game
-    TripleBuffer<ContactSnapshot> snapshots;  // local -> haptic
-    TripleBuffer<GlobalResult> global;        // global -> local
-    SafetyFilter filter;                      // haptic's own
-    std::vector<LocalPair> local_pairs;       // local's own
-    std::uint64_t published = 0;              // local's own: snapshots so far
-    std::vector<Contact> contacts;            // local -> game, under results_mutex_
+    double radius = 0.0;                          // of the tool's bounds about the reference point
+    SeqLock<PoseSample> pose;                     // haptic -> local, global, game
+    SeqLock<PoseSample> game_pose;                // game -> haptic, for tools no device holds
+    SeqLock<WrenchSample> wrench;                 // haptic -> game
+    TripleBuffer<ContactSnapshot> snapshots;      // local -> haptic
+    TripleBuffer<GlobalResult> global;            // global -> local
+    SafetyFilter filter;                          // haptic's own
+    std::vector<LocalPair> local_pairs;           // local's own
+    std::uint64_t published = 0;                  // local's own: snapshots so far
+    std::vector<std::uint32_t> published_others;  // global's own: the pairs it last handed over
+    std::vector<Contact> contacts;                // local -> game, under results_mutex_
   };
 
   void haptic_main();
