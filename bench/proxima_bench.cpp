@@ -186,7 +186,8 @@ void read_source(const MeshSource& source, const std::string& path, std::vector<
     if (!s)
       throw UserError(s.message() + (source.generated
                                          ? " (scripts/decimate.py writes it; see docs/benchmarks.md)"
-                                         : " (the shared assets must sit beside the repository)"));
+                                         : " (the shared assets: ../shared/assets beside the repository, or "
+                                           "-DPROX_SHARED_ASSETS_DIR)"));
     positions = std::move(obj.positions);
     indices = std::move(obj.indices);
     return;
@@ -196,7 +197,10 @@ void read_source(const MeshSource& source, const std::string& path, std::vector<
   io::GltfLoadOptions options;
   options.mode = source.part < 0 ? io::GltfSceneMode::Merged : io::GltfSceneMode::PerNode;
   const Status s = io::load_gltf(path, options, meshes);
-  if (!s) throw UserError(s.message() + " (the shared assets must sit beside the repository)");
+  if (!s)
+    throw UserError(
+        s.message() +
+        " (the shared assets: ../shared/assets beside the repository, or -DPROX_SHARED_ASSETS_DIR)");
   const std::size_t i = source.part < 0 ? 0 : static_cast<std::size_t>(source.part);
   if (i >= meshes.size())
     throw UserError(path + ": no node " + std::to_string(source.part) + " with triangles (" +

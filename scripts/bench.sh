@@ -27,6 +27,7 @@ build/coal-venv/bin/python -c "import coal" 2>/dev/null ||
 coal_prefix=$(ls -d build/coal-venv/lib/python3*/site-packages/cmeel.prefix)
 
 cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DPROX_WARNINGS_AS_ERRORS=ON \
+  -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" \
   -DPROX_BUILD_BENCHMARKS=ON -DPROX_BENCH_WITH_FCL=ON -DPROX_BENCH_WITH_COAL=ON \
   -DCMAKE_PREFIX_PATH="$PWD/$coal_prefix" >/dev/null
 cmake --build build/release --target proxima_bench -j "$jobs"

@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 . scripts/deps.sh
 need_packages "${CORE_PACKAGES[@]}"
 
-cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" >/dev/null
 cmake --build build/release --target proxima -j "$(nproc)"
 build/release/samples/cli/proxima path --csv build/proxima-path.csv "$@"
 echo

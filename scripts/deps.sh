@@ -25,8 +25,22 @@ BENCH_PACKAGES=(libbenchmark-dev libfcl-dev python3 python3-venv)
 SIMPLIFIER_VERSION=0.2.0  # fast-simplification: the decimated bunnies (bench/decimate.py)
 COAL_VERSION=3.0.3        # coal: the peer behind PROX_BENCH_WITH_COAL (scripts/bench.sh)
 
-# The shared assets beside the repository (PROXIMA_ASSETS overrides).
-assets_dir() { echo "${PROXIMA_ASSETS:-../shared/assets}"; }
+# The shared assets, as an absolute path: PROXIMA_ASSETS if set, else
+# ../shared/assets beside the repository, else beside the repository this one
+# was cloned from (a clone made elsewhere, as CI makes), else the first.
+assets_dir() {
+  local candidates=("${PROXIMA_ASSETS:-}" "../shared/assets")
+  local origin
+  origin=$(git remote get-url origin 2>/dev/null || true)
+  [ -n "$origin" ] && [ -d "$origin" ] && candidates+=("$origin/../shared/assets")
+  for dir in "${candidates[@]}"; do
+    if [ -n "$dir" ] && [ -f "$dir/bunny.obj" ]; then
+      (cd "$dir" && pwd)
+      return
+    fi
+  done
+  echo "$(pwd)/../shared/assets"
+}
 
 # build/bench-venv with the simplifier (and matplotlib unless "--no-plots"):
 # returns non-zero if pip cannot install them.

@@ -13,7 +13,7 @@ jobs=$(nproc)
 configure() {  # configure DIR [cmake args...]
   local dir=$1
   shift
-  cmake -S . -B "$dir" -G Ninja -DPROX_WARNINGS_AS_ERRORS=ON "$@" >/dev/null
+  cmake -S . -B "$dir" -G Ninja -DPROX_WARNINGS_AS_ERRORS=ON -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" "$@" >/dev/null
 }
 
 echo "== core only (nothing optional: no tests, samples, benchmarks or glTF)"

@@ -94,7 +94,8 @@ std::vector<GltfMesh> load_asset(const std::string& relative, GltfSceneMode mode
                                  double* seconds = nullptr) {
   const std::string path = asset(relative);
   EXPECT_TRUE(fs::exists(path)) << "missing shared asset " << path
-                                << ": the shared assets must sit beside the repository (../shared/assets)";
+                                << ": the shared assets are missing: put them in ../shared/assets beside the "
+                                   "repository or configure with -DPROX_SHARED_ASSETS_DIR";
   std::vector<GltfMesh> out;
   const auto start = std::chrono::steady_clock::now();
   const Status status = load_gltf(path, {mode}, out);
@@ -132,7 +133,8 @@ const char kDraco[] = "gltf/Duck-Draco/Duck.gltf";  // refused: Draco is not dec
 TEST(GltfAssets, SharedAssetsArePresent) {
   ASSERT_TRUE(fs::is_directory(asset("gltf")))
       << "the shared assets folder " << asset("gltf")
-      << " is missing: the glTF tests need ../shared/assets beside the repository";
+      << " is missing: the glTF tests need the shared assets (../shared/assets beside the repository, or "
+         "-DPROX_SHARED_ASSETS_DIR)";
 }
 
 // Every .gltf/.glb on disk has its expectation here, so none goes untested.

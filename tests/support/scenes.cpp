@@ -32,7 +32,9 @@ std::shared_ptr<const Model> model_from_arrays(const std::vector<double>& positi
 std::shared_ptr<const Model> load_obj_model(const std::string& relative) {
   io::ObjData obj;
   const Status status = io::read_obj(asset_path(relative), obj);
-  EXPECT_TRUE(status.is_ok()) << status.message() << " (the shared assets must sit beside the repository)";
+  EXPECT_TRUE(status.is_ok())
+      << status.message()
+      << " (the shared assets: ../shared/assets beside the repository, or -DPROX_SHARED_ASSETS_DIR)";
   if (!status.is_ok()) return nullptr;
   return model_from_arrays(obj.positions, obj.indices);
 }

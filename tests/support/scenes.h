@@ -11,8 +11,8 @@
 
 namespace prox::testing {
 
-// The shared assets folder (../shared/assets beside the repository), as
-// configured at build time.
+// The shared assets folder as configured at build time (PROX_SHARED_ASSETS_DIR:
+// ../shared/assets beside the repository unless configured otherwise).
 std::string asset_path(const std::string& relative);
 
 // A mesh and its hierarchy.
