@@ -36,6 +36,9 @@
 extern "C" {
 #endif
 
+/* Overridable, so that tools that parse the header (the Python binding's
+ * cffi build) can define it away. */
+#ifndef PROX_API
 #if defined(_WIN32) && defined(PROX_BUILDING_SHARED)
 #define PROX_API __declspec(dllexport)
 #elif defined(_WIN32) && defined(PROX_USING_SHARED)
@@ -45,6 +48,7 @@ extern "C" {
 #else
 #define PROX_API
 #endif
+#endif /* PROX_API */
 
 /* The API version this header describes. proxDefaultWorldDef() stores it in
  * the def; proxCreateWorld() refuses a def from an incompatible header. */
