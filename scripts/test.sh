@@ -26,9 +26,10 @@ configure build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=address,u
 cmake --build build/asan -j "$jobs"
 ctest --test-dir build/asan --output-on-failure -j "$jobs"
 
-echo "== thread sanitizer (the tests labelled 'threads': handoffs, runtime threads, C API threads)"
+echo "== thread sanitizer (the tests labelled 'threads': handoffs, runtime threads, C API threads and devices)"
 configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=thread -DPROX_BUILD_SAMPLES=OFF
-cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests
+cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests \
+  proxima_capi_stream_tests proxima_capi_timing_tests
 ctest --test-dir build/tsan --output-on-failure -L threads
 
 echo "== release"

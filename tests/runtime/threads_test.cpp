@@ -305,6 +305,19 @@ TEST_F(ThreadsTest, ASmallSnapshotKeepsTheClosestContacts) {
   expect_safe_output();
 }
 
+// The spinning wait (and a real-time priority, where the system grants it)
+// changes how the loop waits, not what it does: the same answer at rest,
+// and still no allocation.
+TEST_F(ThreadsTest, SpinningRealTimeLoopAgreesAndAllocatesNothing) {
+  settings_.haptic_timing = HapticTiming::Spin;
+  settings_.realtime_priority[0] = 10;
+  FaultyDevice* device = nullptr;
+  start_and_settle(device);
+  EXPECT_EQ(world_->threads()->haptic_timing(), HapticTiming::Spin);
+  EXPECT_GT(world_->threads()->loop_summary(Role::Haptic).updates, 100u);
+  expect_safe_output();
+}
+
 // An engine's thread pushes poses at 90 Hz through the streamed device: the
 // tool approaches and comes to rest at the deterministic step's wrench, and
 // neither the haptic thread nor the pushing thread allocates.
