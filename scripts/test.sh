@@ -47,4 +47,5 @@ else
   echo "   fast-simplification could not be installed: scaling-2k and scaling-7k are skipped"
 fi
 build/release/bench/proxima_bench --scene all --poses 5 --meshes build/bench-meshes --out build/bench-smoke >/dev/null
+build/release/bench/proxima_timing_bench --seconds 0.1 --out build/bench-smoke >/dev/null
 ctest --test-dir build/release --output-on-failure -j "$jobs"

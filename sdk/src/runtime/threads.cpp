@@ -227,6 +227,20 @@ void Threads::configure(Role role) {
   }
 }
 
+double Threads::cpu_seconds(Role role) const {
+#if defined(__linux__)
+  std::thread& t = const_cast<std::thread&>(threads_[int(role)]);
+  clockid_t clock;
+  timespec ts{};
+  if (!t.joinable() || pthread_getcpuclockid(t.native_handle(), &clock) != 0 || clock_gettime(clock, &ts) != 0)
+    return -1.0;
+  return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
+#else
+  (void)role;
+  return -1.0;
+#endif
+}
+
 ThreadGrant Threads::grant(Role role) const {
   const int r = int(role);
   return {pinned_[r].load(std::memory_order_relaxed), priority_[r].load(std::memory_order_relaxed),

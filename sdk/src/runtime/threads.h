@@ -118,6 +118,9 @@ class Threads {
   // Spin or Sleep, as the haptic thread resolved Auto when it started.
   HapticTiming haptic_timing() const { return timing_.load(std::memory_order_relaxed); }
   int memory_lock_error() const { return memory_lock_error_.load(std::memory_order_relaxed); }
+  // CPU seconds a running thread has used so far (its own clock); -1 when
+  // the system cannot tell. For benchmarks: what a timing mode costs.
+  double cpu_seconds(Role role) const;
   // The periods of the last LoopStats::kWindow iterations, for benchmarks.
   std::vector<double> periods(Role role) const { return loop_stats_[int(role)].periods(); }
 
