@@ -1,0 +1,100 @@
+using Proxima;
+using UnityEngine;
+
+namespace Proxima.Unity
+{
+    /// <summary>The held tool: a MeshFilter's mesh as a Proxima tool. Without a device
+    /// its Transform moves it (each Update; while the threads run the haptic loop
+    /// takes that pose at its next tick). With a Device (set before Start, from a
+    /// script) the device holds it and Proxima moves it at 1 kHz. Exposes the
+    /// wrench in Unity's frame and draws the contacts with Gizmos.</summary>
+    [RequireComponent(typeof(MeshFilter))]
+    [AddComponentMenu("Proxima/Proxima Tool")]
+    public sealed class ProximaTool : MonoBehaviour
+    {
+        [Tooltip("The world to join; empty: the scene's ProximaWorld")]
+        public ProximaWorld world;
+        [Tooltip("How many contacts are read each frame (for Gizmos and ContactCount)")]
+        public int maxContacts = 256;
+        [Tooltip("Draw each contact's closest points and the line between them")]
+        public bool drawContacts = true;
+
+        /// <summary>A device that holds the tool instead of its Transform; set before Start.</summary>
+        public Device Device { get; set; }
+
+        public Body Body => body;
+        Body body;
+        /// <summary>N, on the tool, Unity's frame.</summary>
+        public Vector3 Force { get; private set; }
+        /// <summary>N m, on the tool about its mesh's bounds centre, Unity's frame.</summary>
+        public Vector3 Torque { get; private set; }
+        /// <summary>The safety gate or the force clip changed the wrench.</summary>
+        public bool Clipped { get; private set; }
+        /// <summary>How many contacts the tool has (may exceed maxContacts).</summary>
+        public int ContactCount { get; private set; }
+
+        Proxima.Mesh mesh;
+        Contact[] contacts;
+
+        void Start()
+        {
+            world = ProximaWorld.Find(world);
+            mesh = UnityFrame.CreateMesh(world.World, GetComponent<MeshFilter>());
+            MeshInfo info = mesh.Info;
+            Vec3 centre = 0.5 * (info.BoundsMin + info.BoundsMax);
+            body = world.World.CreateBody(mesh, BodyType.Tool, UnityFrame.ToProxima(transform), centre);
+            if (Device != null) Body.SetDevice(Device);
+            contacts = new Contact[System.Math.Max(0, maxContacts)];
+        }
+
+        void Update()
+        {
+            if (Body.IsNull || Device != null) return;
+            body.Pose = UnityFrame.ToProxima(transform);
+        }
+
+        void LateUpdate()
+        {
+            if (Body.IsNull) return;
+            if (Device != null)
+            {
+                Pose p = Body.Pose;
+                transform.position = UnityFrame.ToUnity(p.Position);
+                transform.rotation = UnityFrame.ToUnity(p.Rotation);
+            }
+            Wrench w = Body.GetWrench();
+            Force = UnityFrame.ToUnity(w.Force);
+            Torque = UnityFrame.TorqueToUnity(w.Torque);
+            Clipped = w.Clipped;
+            ContactCount = Body.GetContacts(contacts);
+        }
+
+        void OnDrawGizmos()
+        {
+            if (!drawContacts || contacts == null) return;
+            int n = System.Math.Min(ContactCount, contacts.Length);
+            for (int i = 0; i < n; ++i)
+            {
+                Vector3 a = UnityFrame.ToUnity(contacts[i].PointOther), b = UnityFrame.ToUnity(contacts[i].PointTool);
+                Gizmos.color = Color.yellow;
+                Gizmos.DrawLine(a, b);
+                Gizmos.color = Color.red;
+                Gizmos.DrawSphere(a, 0.0005f);
+            }
+        }
+
+        void OnDestroy()
+        {
+            if (Body.IsNull || world == null || !world.AcceptsChanges) return;
+            try
+            {
+                Body.Destroy();
+                mesh.Destroy();
+            }
+            catch (ProximaException e)
+            {
+                Debug.LogWarning(name + ": " + e.Message);
+            }
+        }
+    }
+}
