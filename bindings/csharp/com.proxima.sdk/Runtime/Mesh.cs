@@ -70,11 +70,11 @@ namespace Proxima
         {
             for (;;)
             {
-                Result r = Native.proxBody_GetContacts(id, null, 0, out int count);
+                Result r = Native.GetContacts(id, null, out int count);
                 if (r != Result.Success && r != Result.Capacity) throw ProximaException.FromLastError(r);
                 var contacts = new Contact[count];
                 if (count == 0) return contacts;
-                r = Native.proxBody_GetContacts(id, contacts, count, out int filled);
+                r = Native.GetContacts(id, contacts, out int filled);
                 // Only the threads can change the count between the two calls.
                 if (r == Result.Capacity) continue;
                 Native.Check(r);
@@ -90,7 +90,7 @@ namespace Proxima
         public int GetContacts(Contact[] buffer)
         {
             if (buffer == null) throw new ArgumentNullException(nameof(buffer));
-            Result r = Native.proxBody_GetContacts(id, buffer, buffer.Length, out int count);
+            Result r = Native.GetContacts(id, buffer, out int count);
             if (r != Result.Success && r != Result.Capacity) throw ProximaException.FromLastError(r);
             return count;
         }
@@ -109,13 +109,13 @@ namespace Proxima
         {
             for (;;)
             {
-                Result r = Native.proxBody_GetIntersections(id, null, 0, out int pointCount, null, 0, out int lineCount);
+                Result r = Native.proxBody_GetIntersections(id, IntPtr.Zero, 0, out int pointCount, IntPtr.Zero, 0,
+                                                            out int lineCount);
                 if (r != Result.Success && r != Result.Capacity) throw ProximaException.FromLastError(r);
                 if (lineCount == 0) return new Polyline[0];
                 var points = new Vec3[pointCount];
                 var lines = new PolylineInfo[lineCount];
-                r = Native.proxBody_GetIntersections(id, points, pointCount, out int pointsOut, lines, lineCount,
-                                                     out int linesOut);
+                r = Native.GetIntersections(id, points, out int pointsOut, lines, out int linesOut);
                 if (r == Result.Capacity) continue;
                 Native.Check(r);
                 var result = new Polyline[linesOut];
