@@ -187,27 +187,16 @@ namespace Proxima.Tests
             }
         }
 
-        [Test]
-        public void ManagedDeviceAt1kHzBesideTheGarbageCollector()
+        /// <summary>Runs the threads for a second with the device holding the tool, while
+        /// `beside` runs on this thread; prints how the ticks came (recorded, not asserted:
+        /// timing depends on the machine, docs/csharp.md).</summary>
+        StillDevice RunForASecond(string label, Action<Stopwatch> beside)
         {
             var device = new StillDevice();
             tool.SetDevice(device);
             world.StartThreads(ThreadSettings.Default);
-            // Garbage on this thread and full collections, for a second, while the
-            // haptic thread calls the device.
             var clock = Stopwatch.StartNew();
-            int collections = 0;
-            var keep = new List<byte[]>();
-            while (clock.ElapsedMilliseconds < 1000)
-            {
-                for (int i = 0; i < 100; ++i) keep.Add(new byte[1024]);
-                if (keep.Count > 5000) keep.Clear();
-                if (clock.ElapsedMilliseconds / 50 > collections)
-                {
-                    GC.Collect();
-                    ++collections;
-                }
-            }
+            beside(clock);
             world.StopThreads();
 
             int n = Math.Min(device.reads, device.ticks.Length);
@@ -219,15 +208,39 @@ namespace Proxima.Tests
                 if (ms > 2.0) ++late;
                 worst = Math.Max(worst, ms);
             }
-            // Recorded, not asserted: timing depends on the machine (docs/csharp.md).
-            Console.WriteLine("managed device at 1 kHz for 1 s beside {0} full collections: {1} ticks, {2} late (> 2 ms), " +
-                              "longest gap {3:F2} ms", collections, device.reads, late, worst);
+            Console.WriteLine("managed device at 1 kHz for 1 s, {0}: {1} ticks, {2} late (> 2 ms), longest gap {3:F2} ms",
+                              label, device.reads, late, worst);
             Assert.Greater(device.reads, 100, "the haptic thread called the device");
             Assert.Greater(device.writes, 100);
             Assert.AreEqual(0L, device.Exceptions);
             Assert.IsFalse(double.IsNaN(device.last.Force.X) || double.IsInfinity(device.last.Force.X));
-            Assert.Greater(tool.GetWrench().Force.X + device.last.Force.X, -1e-12);
-            Assert.AreEqual(world.GetThreadStats(ThreadRole.Haptic).Updates, (ulong)device.reads, 2.0);
+            Assert.AreEqual(world.GetThreadStats(ThreadRole.Haptic).Updates, (ulong)device.reads, 2.0,
+                            "one read per haptic tick");
+            return device;
+        }
+
+        [Test]
+        public void ManagedDeviceAt1kHzBesideTheGarbageCollector()
+        {
+            // The same second twice, side by side: this thread asleep, then making
+            // garbage and forcing a full collection every 50 ms.
+            RunForASecond("this thread asleep", clock => Thread.Sleep(1000));
+            int collections = 0;
+            RunForASecond("beside 20 full collections", clock =>
+            {
+                var keep = new List<byte[]>();
+                while (clock.ElapsedMilliseconds < 1000)
+                {
+                    for (int i = 0; i < 100; ++i) keep.Add(new byte[1024]);
+                    if (keep.Count > 5000) keep.Clear();
+                    if (clock.ElapsedMilliseconds / 50 > collections)
+                    {
+                        GC.Collect();
+                        ++collections;
+                    }
+                }
+            });
+            Assert.GreaterOrEqual(collections, 19);
         }
 
         sealed class ThrowingDevice : Device
