@@ -33,6 +33,10 @@ int main(void) {
   SIZE(proxScriptedDeviceId);
   SIZE(proxScriptedDeviceDef);
   SIZE(proxScriptedDeviceRecord);
+  SIZE(proxStreamMode);
+  SIZE(proxStreamDeviceId);
+  SIZE(proxStreamDeviceDef);
+  SIZE(proxStreamDeviceStats);
   SIZE(proxThreadsDef);
   SIZE(proxThreadStats);
   SIZE(proxSafetyStats);
@@ -56,6 +60,9 @@ int main(void) {
   OFFSET(proxDeviceDef, userData);
   OFFSET(proxScriptedDeviceDef, secondsPerPose);
   OFFSET(proxScriptedDeviceRecord, allFinite);
+  OFFSET(proxStreamDeviceDef, delay);
+  OFFSET(proxStreamDeviceDef, internalValue);
+  OFFSET(proxStreamDeviceStats, meanSampleInterval);
   OFFSET(proxThreadsDef, staleAfter);
   OFFSET(proxThreadsDef, internalValue);
   OFFSET(proxThreadStats, targetRate);

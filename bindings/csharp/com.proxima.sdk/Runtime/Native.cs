@@ -36,6 +36,13 @@ namespace Proxima
     }
 
     [StructLayout(LayoutKind.Sequential)]
+    internal struct StreamDeviceId
+    {
+        public uint Index1, Reserved;
+        public WorldId World;
+    }
+
+    [StructLayout(LayoutKind.Sequential)]
     internal struct WorldDef
     {
         public int ApiVersion;
@@ -190,6 +197,22 @@ namespace Proxima
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxScriptedDevice_GetRecord(ScriptedDeviceId device,
                                                                    out ScriptedDeviceRecord record);
+
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern double proxGetTime();
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern StreamDeviceSettings proxDefaultStreamDeviceDef();
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxWorld_CreateStreamDevice(WorldId world, ref StreamDeviceSettings def,
+                                                                   out StreamDeviceId device);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxStreamDevice_PushPose(StreamDeviceId device, ref Pose pose, double timeSeconds);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxStreamDevice_GetWrench(StreamDeviceId device, out Wrench wrench);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxStreamDevice_GetDeviceDef(StreamDeviceId device, out DeviceDef def);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxStreamDevice_GetStats(StreamDeviceId device, out StreamDeviceStats stats);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ThreadSettings proxDefaultThreadsDef();

@@ -166,6 +166,17 @@ namespace Proxima
             }
         }
 
+        /// <summary>A streamed device (see StreamDevice): attach it with Body.SetDevice, then
+        /// push the tool's pose once a frame. At most 1024 exist at once in a process.</summary>
+        public StreamDevice CreateStreamDevice(StreamDeviceSettings settings)
+        {
+            Native.Check(Native.proxWorld_CreateStreamDevice(id, ref settings, out StreamDeviceId device));
+            return new StreamDevice(device);
+        }
+
+        /// <summary>A streamed device with StreamDeviceSettings.Default.</summary>
+        public StreamDevice CreateStreamDevice() => CreateStreamDevice(StreamDeviceSettings.Default);
+
         /// <summary>A scripted device whose path is a file: "tx ty tz qw qx qy qz" per line.</summary>
         public ScriptedDevice LoadScriptedDevice(string path, double secondsPerPose, bool loop)
         {

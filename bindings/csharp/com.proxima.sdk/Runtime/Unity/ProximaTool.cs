@@ -3,10 +3,12 @@ using UnityEngine;
 
 namespace Proxima.Unity
 {
-    /// <summary>The held tool: a MeshFilter's mesh as a Proxima tool. Without a device
-    /// its Transform moves it (each Update; while the threads run the haptic loop
-    /// takes that pose at its next tick). With a Device (set before Start, from a
-    /// script) the device holds it and Proxima moves it at 1 kHz. Exposes the
+    /// <summary>The held tool: a MeshFilter's mesh as a Proxima tool, moved by its
+    /// Transform. When the world runs its threads, the Transform's pose goes through
+    /// a streamed device, pushed each Update, and the haptic loop renders it at
+    /// 1 kHz (interpolated, streamDelay behind); when the world steps, each Update
+    /// sets the pose. With a managed Device instead (set before Start, from a
+    /// script) the device holds the tool and the Transform follows it. Exposes the
     /// wrench in Unity's frame and draws the contacts with Gizmos.</summary>
     [RequireComponent(typeof(MeshFilter))]
     [AddComponentMenu("Proxima/Proxima Tool")]
@@ -18,12 +20,20 @@ namespace Proxima.Unity
         public int maxContacts = 256;
         [Tooltip("Draw each contact's closest points and the line between them")]
         public bool drawContacts = true;
+        [Tooltip("With the world's threads: how the haptic loop renders the poses pushed each frame")]
+        public StreamMode streamMode = StreamMode.Interpolate;
+        [Tooltip("Seconds the rendered pose lags the newest frame's, so that a sample is nearly always on either side: at least one frame")]
+        public double streamDelay = 1.0 / 50;
 
         /// <summary>A device that holds the tool instead of its Transform; set before Start.</summary>
         public Device Device { get; set; }
 
         public Body Body => body;
         Body body;
+
+        /// <summary>The streamed device that carries the Transform's pose to the haptic
+        /// loop, when the world runs its threads and no Device is set.</summary>
+        public StreamDevice? Stream { get; private set; }
         /// <summary>N, on the tool, Unity's frame.</summary>
         public Vector3 Force { get; private set; }
         /// <summary>N m, on the tool about its mesh's bounds centre, Unity's frame.</summary>
@@ -43,14 +53,30 @@ namespace Proxima.Unity
             MeshInfo info = mesh.Info;
             Vec3 centre = 0.5 * (info.BoundsMin + info.BoundsMax);
             body = world.World.CreateBody(mesh, BodyType.Tool, UnityFrame.ToProxima(transform), centre);
-            if (Device != null) Body.SetDevice(Device);
+            if (Device != null)
+            {
+                body.SetDevice(Device);
+            }
+            else if (world.runThreads)
+            {
+                StreamDeviceSettings settings = StreamDeviceSettings.Default;
+                settings.Mode = streamMode;
+                settings.Delay = streamDelay;
+                StreamDevice stream = world.World.CreateStreamDevice(settings);
+                body.SetDevice(stream);
+                stream.PushPose(UnityFrame.ToProxima(transform));
+                Stream = stream;
+            }
             contacts = new Contact[System.Math.Max(0, maxContacts)];
         }
 
         void Update()
         {
             if (Body.IsNull || Device != null) return;
-            body.Pose = UnityFrame.ToProxima(transform);
+            if (Stream.HasValue)
+                Stream.Value.PushPose(UnityFrame.ToProxima(transform));
+            else
+                body.Pose = UnityFrame.ToProxima(transform);
         }
 
         void LateUpdate()

@@ -62,6 +62,10 @@ namespace Proxima.Tests
             new object[] { "proxScriptedDeviceId", typeof(ScriptedDevice) },
             new object[] { "proxScriptedDeviceDef", typeof(ScriptedDeviceDef) },
             new object[] { "proxScriptedDeviceRecord", typeof(ScriptedDeviceRecord) },
+            new object[] { "proxStreamDeviceId", typeof(StreamDeviceId) },
+            new object[] { "proxStreamDeviceId", typeof(StreamDevice) },
+            new object[] { "proxStreamDeviceDef", typeof(StreamDeviceSettings) },
+            new object[] { "proxStreamDeviceStats", typeof(StreamDeviceStats) },
             new object[] { "proxThreadsDef", typeof(ThreadSettings) },
             new object[] { "proxThreadStats", typeof(ThreadStats) },
             new object[] { "proxSafetyStats", typeof(SafetyStats) },
@@ -96,6 +100,9 @@ namespace Proxima.Tests
             new object[] { "proxDeviceDef.userData", typeof(DeviceDef), "UserData" },
             new object[] { "proxScriptedDeviceDef.secondsPerPose", typeof(ScriptedDeviceDef), "SecondsPerPose" },
             new object[] { "proxScriptedDeviceRecord.allFinite", typeof(ScriptedDeviceRecord), "AllFinite" },
+            new object[] { "proxStreamDeviceDef.delay", typeof(StreamDeviceSettings), "Delay" },
+            new object[] { "proxStreamDeviceDef.internalValue", typeof(StreamDeviceSettings), "internalValue" },
+            new object[] { "proxStreamDeviceStats.meanSampleInterval", typeof(StreamDeviceStats), "MeanSampleInterval" },
             new object[] { "proxThreadsDef.staleAfter", typeof(ThreadSettings), "StaleAfter" },
             new object[] { "proxThreadsDef.internalValue", typeof(ThreadSettings), "internalValue" },
             new object[] { "proxThreadStats.targetRate", typeof(ThreadStats), "TargetRate" },
@@ -115,9 +122,10 @@ namespace Proxima.Tests
         public void EnumsAre32Bits()
         {
             foreach (Type t in new[] { typeof(Result), typeof(Method), typeof(ForceCurve), typeof(ForcePreset),
-                                       typeof(BodyType), typeof(Feature), typeof(ThreadRole) })
+                                       typeof(BodyType), typeof(Feature), typeof(ThreadRole), typeof(StreamMode) })
                 Assert.AreEqual(typeof(int), Enum.GetUnderlyingType(t), t.Name);
             Assert.AreEqual(c["proxResult"], sizeof(int));
+            Assert.AreEqual(c["proxStreamMode"], sizeof(int));
         }
 
         [Test]

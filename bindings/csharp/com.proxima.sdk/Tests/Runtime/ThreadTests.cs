@@ -219,28 +219,57 @@ namespace Proxima.Tests
             return device;
         }
 
+        /// <summary>Makes garbage and forces a full collection every 50 ms for a second;
+        /// calls `each` between; returns the number of collections.</summary>
+        static int CollectForASecond(Stopwatch clock, Action each)
+        {
+            int collections = 0;
+            var keep = new List<byte[]>();
+            while (clock.ElapsedMilliseconds < 1000)
+            {
+                for (int i = 0; i < 100; ++i) keep.Add(new byte[1024]);
+                if (keep.Count > 5000) keep.Clear();
+                if (clock.ElapsedMilliseconds / 50 > collections)
+                {
+                    GC.Collect();
+                    ++collections;
+                }
+                each();
+            }
+            return collections;
+        }
+
         [Test]
         public void ManagedDeviceAt1kHzBesideTheGarbageCollector()
         {
-            // The same second twice, side by side: this thread asleep, then making
-            // garbage and forcing a full collection every 50 ms.
+            // The same second three times, side by side: a managed device with this
+            // thread asleep, then with it making garbage and collecting, then the
+            // streamed device (no managed code on the haptic thread) beside the same.
             RunForASecond("this thread asleep", clock => Thread.Sleep(1000));
             int collections = 0;
-            RunForASecond("beside 20 full collections", clock =>
-            {
-                var keep = new List<byte[]>();
-                while (clock.ElapsedMilliseconds < 1000)
-                {
-                    for (int i = 0; i < 100; ++i) keep.Add(new byte[1024]);
-                    if (keep.Count > 5000) keep.Clear();
-                    if (clock.ElapsedMilliseconds / 50 > collections)
-                    {
-                        GC.Collect();
-                        ++collections;
-                    }
-                }
-            });
+            RunForASecond("beside 20 full collections", clock => collections = CollectForASecond(clock, () => { }));
             Assert.GreaterOrEqual(collections, 19);
+
+            StreamDevice hand = world.CreateStreamDevice();
+            tool.SetDevice(hand);
+            world.StartThreads(ThreadSettings.Default);
+            var watch = Stopwatch.StartNew();
+            long lastPush = -1;
+            CollectForASecond(watch, () =>
+            {
+                long ms = watch.ElapsedMilliseconds;
+                if (ms / 10 == lastPush) return;
+                lastPush = ms / 10;
+                hand.PushPose(Near);
+            });
+            world.StopThreads();
+            StreamDeviceStats stream = hand.Stats;
+            ThreadStats haptic = world.GetThreadStats(ThreadRole.Haptic);
+            Console.WriteLine("streamed device pushed at 100 Hz for 1 s beside full collections: {0} haptic ticks read it, " +
+                              "{1} found it stale, haptic period max {2:F2} ms, {3} overruns",
+                              stream.Reads, stream.StaleTicks, haptic.PeriodMax * 1e3, haptic.Overruns);
+            Assert.Greater(stream.Reads, 100UL);
+            Assert.Greater(stream.SamplesPushed, 10UL);
         }
 
         sealed class ThrowingDevice : Device
