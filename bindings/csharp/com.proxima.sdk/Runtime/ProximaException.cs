@@ -9,7 +9,8 @@ namespace Proxima
         /// <summary>The proxResult of the failing call.</summary>
         public Result Result { get; }
 
-        /// <summary>What proxGetLastError() said ("" when the failure was found by the binding).</summary>
+        /// <summary>What proxGetLastError() said, naming the offending argument (or, for a
+        /// failure the binding finds itself, such as a version mismatch, its own words).</summary>
         public string NativeMessage { get; }
 
         public ProximaException(Result result, string message)

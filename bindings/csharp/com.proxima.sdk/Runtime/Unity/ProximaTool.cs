@@ -25,7 +25,8 @@ namespace Proxima.Unity
         [Tooltip("Seconds the rendered pose lags the newest frame's, so that a sample is nearly always on either side: at least one frame")]
         public double streamDelay = 1.0 / 50;
 
-        /// <summary>A device that holds the tool instead of its Transform; set before Start.</summary>
+        /// <summary>A managed device that holds the tool instead of its Transform; set before
+        /// Start. It is called only while the world runs its threads.</summary>
         public Device Device { get; set; }
 
         public Body Body => body;
