@@ -49,7 +49,23 @@ namespace Proxima
         public static Version Binding => new Version(0, 1, 0);
 
         /// <summary>The version of the native library actually loaded.</summary>
-        public static Version Library => Native.proxGetVersion();
+        public static Version Library
+        {
+            get
+            {
+                try
+                {
+                    return Native.proxGetVersion();
+                }
+                catch (DllNotFoundException e)
+                {
+                    throw new DllNotFoundException(
+                        "Proxima's native library (libproxima) could not be loaded. In Unity it belongs in the " +
+                        "package's Runtime/Plugins/<platform>/ (bindings/csharp/fill_plugins.sh copies it from a " +
+                        "build); elsewhere put it beside Proxima.dll or on the library path. (" + e.Message + ")", e);
+                }
+            }
+        }
 
         /// <summary>Throws ProximaException (VersionMismatch) unless the loaded library's
         /// major version is the binding's (and, before 1.0, its minor too).</summary>
