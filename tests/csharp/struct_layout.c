@@ -37,6 +37,7 @@ int main(void) {
   SIZE(proxStreamDeviceId);
   SIZE(proxStreamDeviceDef);
   SIZE(proxStreamDeviceStats);
+  SIZE(proxHapticTiming);
   SIZE(proxThreadsDef);
   SIZE(proxThreadStats);
   SIZE(proxSafetyStats);
@@ -64,8 +65,13 @@ int main(void) {
   OFFSET(proxStreamDeviceDef, internalValue);
   OFFSET(proxStreamDeviceStats, meanSampleInterval);
   OFFSET(proxThreadsDef, staleAfter);
+  OFFSET(proxThreadsDef, hapticTiming);
+  OFFSET(proxThreadsDef, spinMargin);
+  OFFSET(proxThreadsDef, lockMemory);
   OFFSET(proxThreadsDef, internalValue);
   OFFSET(proxThreadStats, targetRate);
+  OFFSET(proxThreadStats, periodP999);
+  OFFSET(proxThreadStats, timing);
   OFFSET(proxMeshStats, hierarchyBytes);
   OFFSET(proxSearchStats, nodePairs);
   OFFSET(proxTrackStats, distanceEvaluations);

@@ -150,6 +150,17 @@ namespace Proxima
     /// <summary>A closest feature of a triangle.</summary>
     public enum Feature { Vertex = 0, Edge = 1, Face = 2 }
 
+    /// <summary>How the haptic loop waits for its next period (proxHapticTiming).</summary>
+    public enum HapticTiming
+    {
+        /// <summary>Spin when the haptic thread runs real-time or on a core of its own, else Sleep.</summary>
+        Auto = 0,
+        /// <summary>Sleep to SpinMargin before the deadline, then spin: on time, costs CPU.</summary>
+        Spin = 1,
+        /// <summary>Sleep to the deadline: no CPU between ticks, late by the OS's wake-up.</summary>
+        Sleep = 2,
+    }
+
     /// <summary>One of the world's own threads (proxThread).</summary>
     public enum ThreadRole { Haptic = 0, Local = 1, Global = 2 }
 
@@ -269,12 +280,19 @@ namespace Proxima
         public double HapticRate;  // Hz (default 1000)
         public double LocalRate;   // Hz (default 1000; 0: back to back)
         public double GlobalRate;  // Hz (default 0: back to back, idle while nothing moves)
-        public int HapticCore, LocalCore, GlobalCore; // -1: not pinned
+        // -1: not pinned. The default, on at least four cores: haptic and local
+        // on the last two, global unpinned; else none.
+        public int HapticCore, LocalCore, GlobalCore;
         public int MaxContacts;    // per tool handed to the haptic loop (default 1024)
         public double StaleAfter;     // s (default 0.05)
         public double MaxForceRate;   // N/s (default 300)
         public double MaxTorqueRate;  // N m/s (default 30)
         public double TrustDistance;  // m; 0: the world's cutoff
+        public HapticTiming HapticTiming; // default Auto
+        public int HapticPriority;    // SCHED_FIFO priority (1-99) asked for the haptic thread; 0: none
+        public double SpinMargin;     // s, in [0, the haptic period]: Spin's spin (default 0.0002)
+        public int LocalPriority;     // the same for the local tracking thread
+        public Bool32 LockMemory;     // mlockall once the threads run (process-wide, never undone)
         readonly int internalValue;
         readonly int reserved;
 
@@ -294,6 +312,13 @@ namespace Proxima
         public double UpdateP50, UpdateP99, UpdateMax; // s of work per iteration
         public ulong Updates;
         public ulong Overruns;
+        public double PeriodP999;      // s
+        public int RealtimePriority;   // the SCHED_FIFO priority granted; 0: none asked, or refused
+        public int RealtimeError;      // the errno that refused it; 0
+        public Bool32 MemoryLocked;    // haptic thread: LockMemory was granted
+        public int MemoryLockError;    // ... or the errno that refused it; 0
+        public HapticTiming Timing;    // haptic thread: Spin or Sleep, as Auto resolved
+        readonly int reserved;
     }
 
     /// <summary>proxSafetyStats: the haptic loop's safety decisions, in ticks over all tools.</summary>

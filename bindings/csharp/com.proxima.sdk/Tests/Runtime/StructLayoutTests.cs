@@ -104,8 +104,13 @@ namespace Proxima.Tests
             new object[] { "proxStreamDeviceDef.internalValue", typeof(StreamDeviceSettings), "internalValue" },
             new object[] { "proxStreamDeviceStats.meanSampleInterval", typeof(StreamDeviceStats), "MeanSampleInterval" },
             new object[] { "proxThreadsDef.staleAfter", typeof(ThreadSettings), "StaleAfter" },
+            new object[] { "proxThreadsDef.hapticTiming", typeof(ThreadSettings), "HapticTiming" },
+            new object[] { "proxThreadsDef.spinMargin", typeof(ThreadSettings), "SpinMargin" },
+            new object[] { "proxThreadsDef.lockMemory", typeof(ThreadSettings), "LockMemory" },
             new object[] { "proxThreadsDef.internalValue", typeof(ThreadSettings), "internalValue" },
             new object[] { "proxThreadStats.targetRate", typeof(ThreadStats), "TargetRate" },
+            new object[] { "proxThreadStats.periodP999", typeof(ThreadStats), "PeriodP999" },
+            new object[] { "proxThreadStats.timing", typeof(ThreadStats), "Timing" },
             new object[] { "proxMeshStats.hierarchyBytes", typeof(MeshStats), "HierarchyBytes" },
             new object[] { "proxSearchStats.nodePairs", typeof(SearchStats), "NodePairs" },
             new object[] { "proxTrackStats.distanceEvaluations", typeof(TrackStats), "DistanceEvaluations" },
@@ -122,10 +127,11 @@ namespace Proxima.Tests
         public void EnumsAre32Bits()
         {
             foreach (Type t in new[] { typeof(Result), typeof(Method), typeof(ForceCurve), typeof(ForcePreset),
-                                       typeof(BodyType), typeof(Feature), typeof(ThreadRole), typeof(StreamMode) })
+                                       typeof(BodyType), typeof(Feature), typeof(ThreadRole), typeof(StreamMode), typeof(HapticTiming) })
                 Assert.AreEqual(typeof(int), Enum.GetUnderlyingType(t), t.Name);
             Assert.AreEqual(c["proxResult"], sizeof(int));
             Assert.AreEqual(c["proxStreamMode"], sizeof(int));
+            Assert.AreEqual(c["proxHapticTiming"], sizeof(int));
         }
 
         [Test]

@@ -76,7 +76,9 @@ namespace Proxima.Tests
         [Test]
         public void ThreadsRunAndFreezeTheScene()
         {
-            world.StartThreads(ThreadSettings.Default);
+            ThreadSettings settings = ThreadSettings.Default;
+            settings.HapticTiming = HapticTiming.Sleep;
+            world.StartThreads(settings);
             try
             {
                 Support.Throws(Result.Busy, "already running", () => world.StartThreads(ThreadSettings.Default));
@@ -99,8 +101,15 @@ namespace Proxima.Tests
                 ThreadStats s = world.GetThreadStats(role);
                 Assert.IsFalse(s.Running, role.ToString());
                 Assert.Greater(s.Updates, 0UL, role.ToString());
-                Assert.AreEqual(-1, s.PinnedCore, role.ToString());
             }
+            ThreadSettings asked = ThreadSettings.Default;
+            ThreadStats haptic = world.GetThreadStats(ThreadRole.Haptic);
+            Assert.That(haptic.PinnedCore == -1 || haptic.PinnedCore == asked.HapticCore, "pinned where asked, or not at all");
+            Assert.AreEqual(-1, world.GetThreadStats(ThreadRole.Global).PinnedCore);
+            Assert.AreEqual(HapticTiming.Sleep, haptic.Timing, "as asked");
+            Assert.AreEqual(0, haptic.RealtimePriority, "none asked");
+            Assert.IsFalse(haptic.MemoryLocked, "not asked");
+            Assert.GreaterOrEqual(haptic.PeriodP999, haptic.PeriodP99);
             Assert.AreEqual(1000.0, world.GetThreadStats(ThreadRole.Haptic).TargetRate);
             Support.Throws(Result.InvalidArgument, "thread", () => world.GetThreadStats((ThreadRole)3));
             Assert.DoesNotThrow(world.StopThreads, "no effect when stopped");
@@ -113,6 +122,12 @@ namespace Proxima.Tests
             ThreadSettings s = ThreadSettings.Default;
             s.HapticRate = -5;
             Support.Throws(Result.InvalidArgument, "haptic rate", () => world.StartThreads(s));
+            s = ThreadSettings.Default;
+            s.SpinMargin = -1;
+            Support.Throws(Result.InvalidArgument, "spin margin", () => world.StartThreads(s));
+            s = ThreadSettings.Default;
+            s.HapticTiming = (HapticTiming)5;
+            Support.Throws(Result.InvalidArgument, "hapticTiming", () => world.StartThreads(s));
             Support.Throws(Result.InvalidArgument, "proxDefaultThreadsDef", () => world.StartThreads(new ThreadSettings()));
         }
 

@@ -43,9 +43,16 @@ namespace Proxima.Tests
         {
             ThreadSettings s = ThreadSettings.Default;
             Assert.AreEqual(1000.0, s.HapticRate);
-            Assert.AreEqual(-1, s.HapticCore);
+            Assert.AreEqual(-1, s.GlobalCore, "the global search is never pinned by default");
+            Assert.That(s.HapticCore == -1 || (s.HapticCore >= 0 && s.HapticCore != s.LocalCore),
+                        "not pinned, or haptic and local on cores of their own: " + s.HapticCore + ", " + s.LocalCore);
             Assert.AreEqual(1024, s.MaxContacts);
             Assert.AreEqual(0.05, s.StaleAfter, 1e-12);
+            Assert.AreEqual(HapticTiming.Auto, s.HapticTiming);
+            Assert.AreEqual(0.0002, s.SpinMargin, 1e-12);
+            Assert.AreEqual(0, s.HapticPriority);
+            Assert.AreEqual(0, s.LocalPriority);
+            Assert.IsFalse(s.LockMemory);
         }
     }
 
