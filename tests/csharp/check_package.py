@@ -2,8 +2,9 @@
 """Checks the Unity package's layout, which no compiler sees: package.json,
 the assembly definitions, a .meta with a unique GUID for every file and
 folder (Unity ignores an immutable package's assets that lack one), the
-native plugin's platform settings, and that the package, the C# binding and
-the C library carry one version. Prints "N passed, N failed".
+native plugin's platform settings, that the package, the C# binding and
+the C library carry one version, and that the binding declares every
+function of proxima.h. Prints "N passed, N failed".
 
     check_package.py REPOSITORY_ROOT
 """
@@ -42,6 +43,16 @@ def main():
     check(binding is not None and ".".join(binding.groups()) == c_version,
           "Version.Binding in Types.cs is the C library's " + c_version)
     check(manifest.get("version") == c_version, "package.json: version is the C library's " + c_version)
+
+    # Every public C function has its P/Invoke declaration (Native.cs).
+    api = open(os.path.join(root, "sdk", "include", "proxima", "proxima.h")).read()
+    c_functions = set(re.findall(r"^PROX_API\s[^;]*?\b(prox\w+)\s*\(", api, re.M | re.S))
+    native = open(os.path.join(pkg, "Runtime", "Native.cs")).read()
+    declared = set(re.findall(r"static extern \w+ (prox\w+)\(", native))
+    declared |= set(re.findall(r'EntryPoint = "(prox\w+)"', native))
+    check(len(c_functions) > 40, "proxima.h's functions were found (%d)" % len(c_functions))
+    for f in sorted(c_functions):
+        check(f in declared, "Native.cs declares " + f)
 
     runtime = json.load(open(os.path.join(pkg, "Runtime", "Proxima.asmdef")))
     check(runtime["name"] == "Proxima", "Runtime asmdef: the assembly is Proxima (InternalsVisibleTo names Proxima.Tests)")
