@@ -223,8 +223,10 @@ namespace Proxima.Tests
                 if (ms > 2.0) ++late;
                 worst = Math.Max(worst, ms);
             }
-            Console.WriteLine("managed device at 1 kHz for 1 s, {0}: {1} ticks, {2} late (> 2 ms), longest gap {3:F2} ms",
-                              label, device.reads, late, worst);
+            ThreadStats haptic = world.GetThreadStats(ThreadRole.Haptic);
+            Console.WriteLine("managed device at 1 kHz for 1 s, {0}: {1} ticks, {2} late (> 2 ms), longest gap {3:F2} ms; " +
+                              "haptic work per tick p50 {4:F1} us, p99 {5:F1} us",
+                              label, device.reads, late, worst, haptic.UpdateP50 * 1e6, haptic.UpdateP99 * 1e6);
             Assert.Greater(device.reads, 100, "the haptic thread called the device");
             Assert.Greater(device.writes, 100);
             Assert.AreEqual(0L, device.Exceptions);
@@ -281,8 +283,10 @@ namespace Proxima.Tests
             StreamDeviceStats stream = hand.Stats;
             ThreadStats haptic = world.GetThreadStats(ThreadRole.Haptic);
             Console.WriteLine("streamed device pushed at 100 Hz for 1 s beside full collections: {0} haptic ticks read it, " +
-                              "{1} found it stale, haptic period max {2:F2} ms, {3} overruns",
-                              stream.Reads, stream.StaleTicks, haptic.PeriodMax * 1e3, haptic.Overruns);
+                              "{1} found it stale, haptic period max {2:F2} ms, {3} overruns; " +
+                              "haptic work per tick p50 {4:F1} us, p99 {5:F1} us",
+                              stream.Reads, stream.StaleTicks, haptic.PeriodMax * 1e3, haptic.Overruns,
+                              haptic.UpdateP50 * 1e6, haptic.UpdateP99 * 1e6);
             Assert.Greater(stream.Reads, 100UL);
             Assert.Greater(stream.SamplesPushed, 10UL);
         }
