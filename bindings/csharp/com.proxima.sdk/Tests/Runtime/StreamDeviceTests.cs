@@ -92,7 +92,7 @@ namespace Proxima.Tests
             StreamDeviceStats s = hand.Stats;
             Assert.AreEqual((ulong)pushes, s.SamplesPushed);
             Assert.AreEqual(0UL, s.SamplesRefused);
-            Assert.Greater(s.Reads, 300UL, "the haptic loop read it");
+            Assert.Greater(s.Reads, 50UL, "the haptic loop read it");
             Assert.Greater(s.MeanSampleInterval, 0.009, "pushed at 100 Hz");
             Assert.Less(s.MeanSampleInterval, 0.1);
         }
