@@ -12,27 +12,33 @@ namespace Proxima.Tests
     [TestFixture]
     public class StructLayoutTests
     {
-        Dictionary<string, int> c;
+        // Read once, on first use: NUnit 2.6's [TestFixtureSetUp] is obsolete in
+        // the NUnit 3 of Unity's Test Runner, and [OneTimeSetUp] is not in 2.6.
+        static Dictionary<string, int> layout;
 
-        [TestFixtureSetUp]
-        public void ReadTheCLayout()
+        static Dictionary<string, int> C
         {
-            var start = new ProcessStartInfo(Support.Program("PROXIMA_STRUCT_LAYOUT"))
+            get
             {
-                UseShellExecute = false,
-                RedirectStandardOutput = true,
-            };
-            c = new Dictionary<string, int>();
-            using (Process p = Process.Start(start))
-            {
-                string line;
-                while ((line = p.StandardOutput.ReadLine()) != null)
+                if (layout != null) return layout;
+                var start = new ProcessStartInfo(Support.Program("PROXIMA_STRUCT_LAYOUT"))
                 {
-                    string[] parts = line.Split(' ');
-                    c[parts[0]] = int.Parse(parts[1]);
+                    UseShellExecute = false,
+                    RedirectStandardOutput = true,
+                };
+                var read = new Dictionary<string, int>();
+                using (Process p = Process.Start(start))
+                {
+                    string line;
+                    while ((line = p.StandardOutput.ReadLine()) != null)
+                    {
+                        string[] parts = line.Split(' ');
+                        read[parts[0]] = int.Parse(parts[1]);
+                    }
+                    p.WaitForExit();
+                    Assert.AreEqual(0, p.ExitCode, "struct_layout failed");
                 }
-                p.WaitForExit();
-                Assert.AreEqual(0, p.ExitCode, "struct_layout failed");
+                return layout = read;
             }
         }
 
@@ -78,8 +84,8 @@ namespace Proxima.Tests
         [TestCaseSource("Twins")]
         public void SizeIsC(string cName, Type type)
         {
-            Assert.IsTrue(c.ContainsKey(cName), cName + " is not printed by struct_layout.c");
-            Assert.AreEqual(c[cName], Marshal.SizeOf(type), type.Name + " against " + cName);
+            Assert.IsTrue(C.ContainsKey(cName), cName + " is not printed by struct_layout.c");
+            Assert.AreEqual(C[cName], Marshal.SizeOf(type), type.Name + " against " + cName);
         }
 
         public static readonly object[] Offsets =
@@ -119,8 +125,8 @@ namespace Proxima.Tests
         [TestCaseSource("Offsets")]
         public void OffsetIsC(string cField, Type type, string field)
         {
-            Assert.IsTrue(c.ContainsKey(cField), cField + " is not printed by struct_layout.c");
-            Assert.AreEqual(c[cField], Marshal.OffsetOf(type, field).ToInt32(), type.Name + "." + field);
+            Assert.IsTrue(C.ContainsKey(cField), cField + " is not printed by struct_layout.c");
+            Assert.AreEqual(C[cField], Marshal.OffsetOf(type, field).ToInt32(), type.Name + "." + field);
         }
 
         [Test]
@@ -129,9 +135,9 @@ namespace Proxima.Tests
             foreach (Type t in new[] { typeof(Result), typeof(Method), typeof(ForceCurve), typeof(ForcePreset),
                                        typeof(BodyType), typeof(Feature), typeof(ThreadRole), typeof(StreamMode), typeof(HapticTiming) })
                 Assert.AreEqual(typeof(int), Enum.GetUnderlyingType(t), t.Name);
-            Assert.AreEqual(c["proxResult"], sizeof(int));
-            Assert.AreEqual(c["proxStreamMode"], sizeof(int));
-            Assert.AreEqual(c["proxHapticTiming"], sizeof(int));
+            Assert.AreEqual(C["proxResult"], sizeof(int));
+            Assert.AreEqual(C["proxStreamMode"], sizeof(int));
+            Assert.AreEqual(C["proxHapticTiming"], sizeof(int));
         }
 
         [Test]
