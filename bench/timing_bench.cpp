@@ -57,7 +57,9 @@ double percentile(std::vector<double> v, double p) {
   return v[std::min(v.size() - 1, static_cast<std::size_t>(p * double(v.size() - 1) + 0.5))];
 }
 
-const char* timing_name(runtime::HapticTiming t) { return t == runtime::HapticTiming::Spin ? "spin" : "sleep"; }
+const char* timing_name(runtime::HapticTiming t) {
+  return t == runtime::HapticTiming::Spin ? "spin" : "sleep";
+}
 
 class Bench {
  public:
@@ -175,17 +177,19 @@ int run(int argc, char** argv) {
   std::vector<Result> results;
   std::printf("haptic loop at 1 kHz, %u cores, %.1f s per configuration; period error |period - 1 ms|\n",
               std::thread::hardware_concurrency(), seconds);
-  std::printf("%-6s %-6s %-9s %9s %9s %9s %9s %9s %8s %s\n", "search", "timing", "priority", "p50 us", "p99 us",
-              "p99.9 us", "max us", "overruns", "CPU", "ticks");
+  std::printf("%-6s %-6s %-9s %9s %9s %9s %9s %9s %8s %s\n", "search", "timing", "priority", "p50 us",
+              "p99 us", "p99.9 us", "max us", "overruns", "CPU", "ticks");
   for (bool busy : {false, true})
     for (runtime::HapticTiming timing : {runtime::HapticTiming::Sleep, runtime::HapticTiming::Spin})
       for (int priority : {0, 80}) {
         const Result r = bench.run({timing, priority, busy}, seconds);
-        const std::string prio = priority == 0 ? "normal" : r.granted ? "FIFO " + std::to_string(r.granted) : "refused";
+        const std::string prio = priority == 0 ? "normal"
+                                 : r.granted   ? "FIFO " + std::to_string(r.granted)
+                                               : "refused";
         std::printf("%-6s %-6s %-9s %9.1f %9.1f %9.1f %9.1f %9llu %7.1f%% %llu\n", busy ? "busy" : "idle",
-                    timing_name(timing), prio.c_str(), r.error_p50 * 1e6, r.error_p99 * 1e6, r.error_p999 * 1e6,
-                    r.error_max * 1e6, static_cast<unsigned long long>(r.overruns), r.cpu * 100.0,
-                    static_cast<unsigned long long>(r.ticks));
+                    timing_name(timing), prio.c_str(), r.error_p50 * 1e6, r.error_p99 * 1e6,
+                    r.error_p999 * 1e6, r.error_max * 1e6, static_cast<unsigned long long>(r.overruns),
+                    r.cpu * 100.0, static_cast<unsigned long long>(r.ticks));
         results.push_back(r);
       }
 

@@ -22,7 +22,6 @@ namespace proxcli {
 
 using Json = prox::JsonWriter;
 
-
 // Thrown for anything the user got wrong; main prints it and exits 1.
 struct UserError {
   std::string message;

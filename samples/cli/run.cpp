@@ -28,7 +28,8 @@ proxPose pose_along(const std::vector<proxPose>& path, double seconds_per_pose, 
     kb = std::sin(kb * angle) / std::sin(angle);
   }
   proxPose p;
-  p.position = {a.position.x + (b.position.x - a.position.x) * f, a.position.y + (b.position.y - a.position.y) * f,
+  p.position = {a.position.x + (b.position.x - a.position.x) * f,
+                a.position.y + (b.position.y - a.position.y) * f,
                 a.position.z + (b.position.z - a.position.z) * f};
   p.rotation = {ka * qa.w + kb * qb.w, ka * qa.x + kb * qb.x, ka * qa.y + kb * qb.y, ka * qa.z + kb * qb.z};
   return p;  // the library normalises the quaternion
@@ -70,15 +71,16 @@ struct Recording {
       };
       raise(self->max_force, f);
       raise(self->max_torque, t);
-      if (self->writes.load(std::memory_order_relaxed) > 0) raise(self->max_force_step, length(sub(w->force, self->last)));
+      if (self->writes.load(std::memory_order_relaxed) > 0)
+        raise(self->max_force_step, length(sub(w->force, self->last)));
       self->last = w->force;
       self->writes.fetch_add(1, std::memory_order_relaxed);
     };
     return d;
   }
   DeviceFigures figures() const {
-    return {reads.load(), writes.load(), max_force.load(), max_torque.load(), max_force_step.load(),
-            all_finite.load()};
+    return {reads.load(),      writes.load(),         max_force.load(),
+            max_torque.load(), max_force_step.load(), all_finite.load()};
   }
 };
 
@@ -162,10 +164,14 @@ int run(Args& args) {
       stream_mode = parse_stream_mode(args.next("--stream-mode value"));
     } else if (opt == "--haptic-timing") {
       const std::string timing = args.next("--haptic-timing value");
-      if (timing == "spin") threads.hapticTiming = PROX_TIMING_SPIN;
-      else if (timing == "sleep") threads.hapticTiming = PROX_TIMING_SLEEP;
-      else if (timing == "auto") threads.hapticTiming = PROX_TIMING_AUTO;
-      else fail("--haptic-timing: '" + timing + "' is not auto, spin or sleep");
+      if (timing == "spin")
+        threads.hapticTiming = PROX_TIMING_SPIN;
+      else if (timing == "sleep")
+        threads.hapticTiming = PROX_TIMING_SLEEP;
+      else if (timing == "auto")
+        threads.hapticTiming = PROX_TIMING_AUTO;
+      else
+        fail("--haptic-timing: '" + timing + "' is not auto, spin or sleep");
     } else if (opt == "--spin-margin") {
       threads.spinMargin = parse_number(args.next("--spin-margin value"), "--spin-margin");
     } else if (opt == "--realtime") {
@@ -184,7 +190,8 @@ int run(Args& args) {
   if (!poses_path.empty()) {
     path = read_poses(poses_path);
     std::printf("run: %s held along %s (%zu poses in %.3g s, then %.3g s still) against %s, cutoff %.3g m\n",
-                path_b.c_str(), poses_path.c_str(), path.size(), seconds, hold, path_a.c_str(), settings.cutoff);
+                path_b.c_str(), poses_path.c_str(), path.size(), seconds, hold, path_a.c_str(),
+                settings.cutoff);
   } else {
     const double far = kPathFar, near = kPathNear;
     path = {translation(x_at_gap(scene, far)), translation(x_at_gap(scene, near))};
@@ -262,7 +269,8 @@ int run(Args& args) {
   check(proxWorld_StopThreads(scene.world()));
   stop_feed = true;
   if (feed.joinable()) feed.join();
-  if (feed_errors.load() > 0) fail("run: the streamed device refused " + std::to_string(feed_errors.load()) + " poses");
+  if (feed_errors.load() > 0)
+    fail("run: the streamed device refused " + std::to_string(feed_errors.load()) + " poses");
 
   const char* names[3] = {"haptic", "local", "global"};
   proxThreadStats stats[3];
@@ -279,13 +287,14 @@ int run(Args& args) {
   const bool spun = stats[0].timing == PROX_TIMING_SPIN;
   std::printf("haptic timing: %s%s%s; real time: haptic %s, local %s",
               threads.hapticTiming == PROX_TIMING_AUTO ? "auto, so " : "", spun ? "spin" : "sleep",
-              spun
-                  ? (" (the last " + fmt_ms(threads.spinMargin) + " of each period)").c_str()
-                  : "",
-              grant_text(stats[0], threads.hapticPriority).c_str(), grant_text(stats[1], threads.localPriority).c_str());
+              spun ? (" (the last " + fmt_ms(threads.spinMargin) + " of each period)").c_str() : "",
+              grant_text(stats[0], threads.hapticPriority).c_str(),
+              grant_text(stats[1], threads.localPriority).c_str());
   if (threads.lockMemory)
-    std::printf("; memory %s", stats[0].memoryLocked ? "locked"
-                                                     : (std::string("not locked: ") + std::strerror(stats[0].memoryLockError)).c_str());
+    std::printf("; memory %s",
+                stats[0].memoryLocked
+                    ? "locked"
+                    : (std::string("not locked: ") + std::strerror(stats[0].memoryLockError)).c_str());
   std::printf("\n");
   proxSafetyStats safety;
   check(proxWorld_GetSafetyStats(scene.world(), &safety));
@@ -316,8 +325,10 @@ int run(Args& args) {
   std::printf(
       "safety: %llu invalid poses, %llu stale ticks, %llu untrusted ticks, %llu limited ticks, "
       "%llu torn snapshots\n",
-      static_cast<unsigned long long>(safety.invalidPoses), static_cast<unsigned long long>(safety.staleTicks),
-      static_cast<unsigned long long>(safety.untrustedTicks), static_cast<unsigned long long>(safety.limitedTicks),
+      static_cast<unsigned long long>(safety.invalidPoses),
+      static_cast<unsigned long long>(safety.staleTicks),
+      static_cast<unsigned long long>(safety.untrustedTicks),
+      static_cast<unsigned long long>(safety.limitedTicks),
       static_cast<unsigned long long>(safety.tornSnapshots));
 
   if (!json_path.empty()) {

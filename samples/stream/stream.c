@@ -104,5 +104,6 @@ int main(int argc, char** argv) {
       (unsigned long long)stats.extrapolatedTicks);
   proxDestroyWorld(world);
   /* The sample fails (for its test) if nothing was felt or anything was off. */
-  return felt > 0.0 && finite && felt <= world_def.force.maxForce && stats.reads > stats.samplesPushed ? 0 : 1;
+  return felt > 0.0 && finite && felt <= world_def.force.maxForce && stats.reads > stats.samplesPushed ? 0
+                                                                                                       : 1;
 }

@@ -196,7 +196,8 @@ class Stream : public ::testing::Test {
         t_marked = true;
         const proxResult now = proxStreamDevice_PushPose(device, &pose, t);
         const bool send_late = holding && ++held_for == 2;
-        const proxResult late = send_late ? proxStreamDevice_PushPose(device, &held, held_time) : PROX_SUCCESS;
+        const proxResult late =
+            send_late ? proxStreamDevice_PushPose(device, &held, held_time) : PROX_SUCCESS;
         t_marked = false;
         push_results.push_back(now);
         if (send_late) push_results.push_back(late), holding = false;
@@ -319,7 +320,8 @@ TEST_F(Stream, BadIdsPosesAndTimesAreRefusedAndCounted) {
   EXPECT_FAILS(proxStreamDevice_PushPose(device, &p, now), PROX_ERROR_INVALID_ARGUMENT, "zero quaternion");
   EXPECT_FAILS(proxStreamDevice_PushPose(device, &good, -1.0), PROX_ERROR_INVALID_ARGUMENT, "timeSeconds");
   EXPECT_FAILS(proxStreamDevice_PushPose(device, &good, kNaN), PROX_ERROR_INVALID_ARGUMENT, "timeSeconds");
-  EXPECT_FAILS(proxStreamDevice_PushPose(device, &good, INFINITY), PROX_ERROR_INVALID_ARGUMENT, "timeSeconds");
+  EXPECT_FAILS(proxStreamDevice_PushPose(device, &good, INFINITY), PROX_ERROR_INVALID_ARGUMENT,
+               "timeSeconds");
   EXPECT_FAILS(proxStreamDevice_GetWrench(device, nullptr), PROX_ERROR_INVALID_ARGUMENT, "wrench");
   EXPECT_FAILS(proxStreamDevice_GetDeviceDef(device, nullptr), PROX_ERROR_INVALID_ARGUMENT, "def");
   EXPECT_FAILS(proxStreamDevice_GetStats(device, nullptr), PROX_ERROR_INVALID_ARGUMENT, "stats");
@@ -342,7 +344,8 @@ TEST_F(Stream, ThreadRulesAndTheWorldsEnd) {
   create(PROX_STREAM_HOLD);
   const proxPose good = at(kFar);
   // Push and GetWrench from any thread; the def and the stats only from the game thread.
-  proxResult push = PROX_ERROR_INTERNAL, wrench = PROX_ERROR_INTERNAL, def = PROX_SUCCESS, stats = PROX_SUCCESS;
+  proxResult push = PROX_ERROR_INTERNAL, wrench = PROX_ERROR_INTERNAL, def = PROX_SUCCESS,
+             stats = PROX_SUCCESS;
   std::thread other([&] {
     proxWrench w{};
     proxDeviceDef d{};
@@ -364,8 +367,10 @@ TEST_F(Stream, ThreadRulesAndTheWorldsEnd) {
   std::thread pusher([&] {
     while (!stop.load()) {
       const proxResult r = proxStreamDevice_PushPose(device, &good, proxGetTime());
-      if (r == PROX_ERROR_INVALID_HANDLE) invalid = true;
-      else if (r != PROX_SUCCESS) ++bad;
+      if (r == PROX_ERROR_INVALID_HANDLE)
+        invalid = true;
+      else if (r != PROX_SUCCESS)
+        ++bad;
     }
   });
   ASSERT_OK(proxWorld_StartThreads(world, &threads));
@@ -376,7 +381,8 @@ TEST_F(Stream, ThreadRulesAndTheWorldsEnd) {
   pusher.join();
   EXPECT_EQ(bad.load(), 0);
   proxWrench w{};
-  EXPECT_FAILS(proxStreamDevice_PushPose(device, &good, proxGetTime()), PROX_ERROR_INVALID_HANDLE, "destroyed");
+  EXPECT_FAILS(proxStreamDevice_PushPose(device, &good, proxGetTime()), PROX_ERROR_INVALID_HANDLE,
+               "destroyed");
   EXPECT_FAILS(proxStreamDevice_GetWrench(device, &w), PROX_ERROR_INVALID_HANDLE, "device");
 }
 
@@ -475,9 +481,12 @@ TEST_F(Stream, TwoPushersAtOnceAreToldApart) {
     const proxPose p = at(kFar);
     for (int i = 0; i < 20000; ++i) {
       const proxResult r = proxStreamDevice_PushPose(device, &p, proxGetTime());
-      if (r == PROX_SUCCESS) ++ok;
-      else if (r == PROX_ERROR_WRONG_THREAD) ++busy;
-      else ++other;
+      if (r == PROX_SUCCESS)
+        ++ok;
+      else if (r == PROX_ERROR_WRONG_THREAD)
+        ++busy;
+      else
+        ++other;
     }
   };
   std::thread a(hammer), b(hammer);

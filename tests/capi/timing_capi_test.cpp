@@ -16,13 +16,13 @@
 #include <thread>
 #include <vector>
 
-#include <cerrno>
 #include <linux/capability.h>
 #include <pthread.h>
 #include <sched.h>
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
+#include <cerrno>
 
 namespace {
 

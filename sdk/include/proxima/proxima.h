@@ -369,7 +369,8 @@ typedef struct proxScriptedDeviceRecord {
 } proxScriptedDeviceRecord;
 
 /* Game thread. */
-PROX_API proxResult proxScriptedDevice_GetRecord(proxScriptedDeviceId device, proxScriptedDeviceRecord* record);
+PROX_API proxResult proxScriptedDevice_GetRecord(proxScriptedDeviceId device,
+                                                 proxScriptedDeviceRecord* record);
 
 /* ---- the streamed device ----------------------------------------------------------
  * The device for engines, bindings and XR (docs/devices.md): the application
@@ -387,29 +388,31 @@ typedef struct proxStreamDeviceId {
 } proxStreamDeviceId;
 
 typedef enum proxStreamMode {
-  PROX_STREAM_HOLD = 0,        /* the newest sample's pose */
-  PROX_STREAM_INTERPOLATE = 1, /* the pose `delay` ago, between the samples around it; holds past the newest */
+  PROX_STREAM_HOLD = 0, /* the newest sample's pose */
+  PROX_STREAM_INTERPOLATE =
+      1, /* the pose `delay` ago, between the samples around it; holds past the newest */
   PROX_STREAM_EXTRAPOLATE = 2, /* the pose now: between samples, or predicted from the newest two (at most
                                   maxExtrapolation past the newest, then held) */
   PROX_STREAM_MODE_FORCE32 = 0x7FFFFFFF
 } proxStreamMode;
 
 typedef struct proxStreamDeviceDef {
-  proxStreamMode mode;     /* default PROX_STREAM_INTERPOLATE */
-  double delay;            /* s, >= 0: INTERPOLATE's latency (default 1/90: one 90 Hz frame) */
-  double maxExtrapolation; /* s, >= 0: EXTRAPOLATE's furthest prediction past the newest sample (default 0.02) */
-  double staleAfter;       /* s, > 0: nothing pushed for this long: no pose, the force fades out (default 0.05) */
+  proxStreamMode mode; /* default PROX_STREAM_INTERPOLATE */
+  double delay;        /* s, >= 0: INTERPOLATE's latency (default 1/90: one 90 Hz frame) */
+  double
+      maxExtrapolation; /* s, >= 0: EXTRAPOLATE's furthest prediction past the newest sample (default 0.02) */
+  double staleAfter; /* s, > 0: nothing pushed for this long: no pose, the force fades out (default 0.05) */
   int32_t internalValue;
   int32_t reserved;
 } proxStreamDeviceDef;
 
 /* What a streamed device saw. Counts since it was created. */
 typedef struct proxStreamDeviceStats {
-  uint64_t samplesPushed;     /* accepted */
-  uint64_t samplesDropped;    /* no newer than the newest accepted: late (out of order) or duplicate */
-  uint64_t samplesRefused;    /* invalid (non-finite, zero quaternion, bad time): PROX_ERROR_INVALID_ARGUMENT */
-  uint64_t reads;             /* haptic ticks that asked for the pose */
-  uint64_t staleTicks;        /* ... and got none: nothing pushed yet, or not for staleAfter */
+  uint64_t samplesPushed;  /* accepted */
+  uint64_t samplesDropped; /* no newer than the newest accepted: late (out of order) or duplicate */
+  uint64_t samplesRefused; /* invalid (non-finite, zero quaternion, bad time): PROX_ERROR_INVALID_ARGUMENT */
+  uint64_t reads;          /* haptic ticks that asked for the pose */
+  uint64_t staleTicks;     /* ... and got none: nothing pushed yet, or not for staleAfter */
   uint64_t extrapolatedTicks; /* ... rendered past the newest sample (EXTRAPOLATE: predicted; else held) */
   double meanSampleInterval;  /* s, between accepted samples' times */
   double maxSampleInterval;   /* s */
@@ -435,7 +438,8 @@ PROX_API proxResult proxWorld_CreateStreamDevice(proxWorldId world, const proxSt
  * PROX_ERROR_INVALID_ARGUMENT and never reaches the haptic loop. Other
  * quaternions are normalised. PROX_ERROR_INVALID_HANDLE once the world is
  * destroyed. */
-PROX_API proxResult proxStreamDevice_PushPose(proxStreamDeviceId device, const proxPose* pose, double timeSeconds);
+PROX_API proxResult proxStreamDevice_PushPose(proxStreamDeviceId device, const proxPose* pose,
+                                              double timeSeconds);
 /* The wrench the haptic loop last handed the device (zero before the
  * first), never torn. Any thread; lock-free. */
 PROX_API proxResult proxStreamDevice_GetWrench(proxStreamDeviceId device, proxWrench* wrench);
@@ -476,8 +480,8 @@ typedef struct proxThreadsDef {
    * none. Needs root, CAP_SYS_NICE or an RLIMIT_RTPRIO of at least it; a
    * refusal is reported in proxThreadStats, never an error. */
   int32_t hapticPriority;
-  double spinMargin;      /* s, in [0, the haptic period]: PROX_TIMING_SPIN's spin (default 0.0002) */
-  int32_t localPriority;  /* the same for the local tracking thread (default 0) */
+  double spinMargin;     /* s, in [0, the haptic period]: PROX_TIMING_SPIN's spin (default 0.0002) */
+  int32_t localPriority; /* the same for the local tracking thread (default 0) */
   /* Lock the process's memory (mlockall(MCL_CURRENT)) once the threads
    * run, so no page the haptic loop touches is paged out. Process-wide and
    * never undone by Proxima; reported in proxThreadStats. Default 0. */
@@ -510,14 +514,14 @@ typedef enum proxThread {
  * the whole run), from the running threads or the last ones stopped. */
 typedef struct proxThreadStats {
   proxBool running;
-  int32_t pinnedCore;    /* -1: not pinned */
-  double targetRate;     /* Hz; 0: back to back */
-  double achievedRate;   /* Hz */
+  int32_t pinnedCore;                     /* -1: not pinned */
+  double targetRate;                      /* Hz; 0: back to back */
+  double achievedRate;                    /* Hz */
   double periodP50, periodP99, periodMax; /* s, iteration start to start */
   double updateP50, updateP99, updateMax; /* s of work per iteration */
   uint64_t updates;
-  uint64_t overruns; /* iterations that missed the next period's start */
-  double periodP999; /* s: the 99.9th percentile of the period */
+  uint64_t overruns;        /* iterations that missed the next period's start */
+  double periodP999;        /* s: the 99.9th percentile of the period */
   int32_t realtimePriority; /* the SCHED_FIFO priority granted; 0: none asked, or refused */
   int32_t realtimeError;    /* the errno that refused it (1, EPERM: no privilege); 0 */
   proxBool memoryLocked;    /* haptic thread's stats: lockMemory was granted */

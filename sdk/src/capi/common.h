@@ -31,7 +31,9 @@ struct Failure {
   std::string message;
 };
 
-[[noreturn]] inline void fail(proxResult code, std::string message) { throw Failure{code, std::move(message)}; }
+[[noreturn]] inline void fail(proxResult code, std::string message) {
+  throw Failure{code, std::move(message)};
+}
 
 template <typename F>
 proxResult guard(const char* function, F&& body) {

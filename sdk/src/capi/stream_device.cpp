@@ -74,7 +74,9 @@ struct StreamTrampoline {
   }
 };
 
-bool finite3(double a, double b, double c) { return std::isfinite(a) && std::isfinite(b) && std::isfinite(c); }
+bool finite3(double a, double b, double c) {
+  return std::isfinite(a) && std::isfinite(b) && std::isfinite(c);
+}
 
 // Checks a pushed sample without building strings on the way (PushPose must
 // not allocate); the message is only made for a refusal.
@@ -150,7 +152,8 @@ proxResult proxWorld_CreateStreamDevice(proxWorldId world, const proxStreamDevic
     need_finite(def->delay, "def->delay");
     if (def->delay < 0.0) fail(PROX_ERROR_INVALID_ARGUMENT, "def->delay must be >= 0 s");
     need_finite(def->maxExtrapolation, "def->maxExtrapolation");
-    if (def->maxExtrapolation < 0.0) fail(PROX_ERROR_INVALID_ARGUMENT, "def->maxExtrapolation must be >= 0 s");
+    if (def->maxExtrapolation < 0.0)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "def->maxExtrapolation must be >= 0 s");
     need_positive(def->staleAfter, "def->staleAfter");
     s.delay = def->delay;
     s.max_extrapolation = def->maxExtrapolation;
@@ -158,7 +161,8 @@ proxResult proxWorld_CreateStreamDevice(proxWorldId world, const proxStreamDevic
 
     std::lock_guard<std::mutex> lock(g_slots_mutex);
     std::uint32_t i = 0;
-    while (i < kMaxStreamDevices && (g_slots[i].owner.load() != 0 || g_slots[i].device.load() != nullptr)) ++i;
+    while (i < kMaxStreamDevices && (g_slots[i].owner.load() != 0 || g_slots[i].device.load() != nullptr))
+      ++i;
     if (i == kMaxStreamDevices)
       fail(PROX_ERROR_CAPACITY, "there are already " + std::to_string(kMaxStreamDevices) +
                                     " streamed devices; destroy a world to free some");
@@ -174,7 +178,8 @@ proxResult proxStreamDevice_PushPose(proxStreamDeviceId device, const proxPose* 
     const DeviceUse use(device);
     StreamSlot& slot = use.slot();
     if (slot.pushing.exchange(true, std::memory_order_acquire))
-      fail(PROX_ERROR_WRONG_THREAD, "another thread is pushing to this device at the same time (one at a time)");
+      fail(PROX_ERROR_WRONG_THREAD,
+           "another thread is pushing to this device at the same time (one at a time)");
     // Released on every way out, so the next pusher (on any thread) sees
     // this one's writes.
     struct Done {
@@ -201,7 +206,8 @@ proxResult proxStreamDevice_GetWrench(proxStreamDeviceId device, proxWrench* wre
     need(wrench, "wrench");
     const DeviceUse use(device);
     const runtime::DeviceWrench w = use.device().wrench();
-    *wrench = {{w.force[0], w.force[1], w.force[2]}, {w.torque[0], w.torque[1], w.torque[2]}, w.limited ? 1 : 0};
+    *wrench = {
+        {w.force[0], w.force[1], w.force[2]}, {w.torque[0], w.torque[1], w.torque[2]}, w.limited ? 1 : 0};
   });
 }
 

@@ -112,7 +112,8 @@ proxResult proxWorld_GetThreadStats(proxWorldId world, proxThread thread, proxTh
     if (role == runtime::Role::Haptic) {
       stats->memoryLocked = t->memory_locked() ? 1 : 0;
       stats->memoryLockError = t->memory_lock_error();
-      stats->timing = t->haptic_timing() == runtime::HapticTiming::Spin ? PROX_TIMING_SPIN : PROX_TIMING_SLEEP;
+      stats->timing =
+          t->haptic_timing() == runtime::HapticTiming::Spin ? PROX_TIMING_SPIN : PROX_TIMING_SLEEP;
     }
   });
 }

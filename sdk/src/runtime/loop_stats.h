@@ -9,10 +9,10 @@
 namespace prox::runtime {
 
 struct LoopSummary {
-  double target_rate = 0.0;                                     // Hz; 0: back to back
-  double achieved_rate = 0.0;                                   // Hz, over the recorded window
+  double target_rate = 0.0;    // Hz; 0: back to back
+  double achieved_rate = 0.0;  // Hz, over the recorded window
   double period_p50 = 0.0, period_p99 = 0.0, period_p999 = 0.0, period_max = 0.0;  // s, start to start
-  double update_p50 = 0.0, update_p99 = 0.0, update_max = 0.0;  // s of work per iteration
+  double update_p50 = 0.0, update_p99 = 0.0, update_max = 0.0;                     // s of work per iteration
   std::uint64_t updates = 0;
   std::uint64_t overruns = 0;  // iterations whose work outlasted the period
 };

@@ -36,7 +36,7 @@ StreamSample extrapolate(const StreamSample& a, const StreamSample& b, double se
   s.time = b.time + seconds;
   for (int i = 0; i < 3; ++i) s.position[i] = b.position[i] + (b.position[i] - a.position[i]) * k;
   glm::dquat d = quat(b) * glm::conjugate(quat(a));  // world-frame rotation from a to b
-  if (d.w < 0.0) d = -d;                              // the shorter way round
+  if (d.w < 0.0) d = -d;                             // the shorter way round
   const glm::dvec3 v(d.x, d.y, d.z);
   const double sin_half = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
   glm::dquat step(1.0, 0.0, 0.0, 0.0);
@@ -98,8 +98,12 @@ bool StreamDevice::push(const StreamSample& sample) {
 
 Device StreamDevice::device() {
   Device d;
-  d.read_pose = [](void* user, DevicePose* pose) { return static_cast<StreamDevice*>(user)->read_pose(pose); };
-  d.write_wrench = [](void* user, const DeviceWrench* w) { static_cast<StreamDevice*>(user)->write_wrench(*w); };
+  d.read_pose = [](void* user, DevicePose* pose) {
+    return static_cast<StreamDevice*>(user)->read_pose(pose);
+  };
+  d.write_wrench = [](void* user, const DeviceWrench* w) {
+    static_cast<StreamDevice*>(user)->write_wrench(*w);
+  };
   d.user = this;
   return d;
 }

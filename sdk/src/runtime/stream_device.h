@@ -37,16 +37,16 @@ struct StreamSample {
 };
 
 struct StreamStats {
-  std::uint64_t pushed = 0;   // samples accepted
-  std::uint64_t dropped = 0;  // not newer than the newest: out of order or duplicate
-  std::uint64_t refused = 0;  // invalid: non-finite, zero quaternion, bad time
-  std::uint64_t reads = 0;    // haptic ticks that asked for a pose
+  std::uint64_t pushed = 0;              // samples accepted
+  std::uint64_t dropped = 0;             // not newer than the newest: out of order or duplicate
+  std::uint64_t refused = 0;             // invalid: non-finite, zero quaternion, bad time
+  std::uint64_t reads = 0;               // haptic ticks that asked for a pose
   std::uint64_t stale_ticks = 0;         // ... and got none: nothing pushed yet, or not for stale_after
   std::uint64_t extrapolated_ticks = 0;  // ... rendered past the newest sample (predicted or held)
   double mean_interval = 0.0;            // s, between accepted samples' times
   double max_interval = 0.0;             // s
-  double max_extrapolation = 0.0;        // s: the furthest a rendered pose was predicted past the newest sample
-  double last_sample_age = 0.0;          // s: the newest sample's age at the last read
+  double max_extrapolation = 0.0;  // s: the furthest a rendered pose was predicted past the newest sample
+  double last_sample_age = 0.0;    // s: the newest sample's age at the last read
 };
 
 // Seconds on a steady, monotonic clock (CLOCK_MONOTONIC on Linux): the clock
@@ -92,8 +92,8 @@ class StreamDevice {
   };
 
   StreamSettings settings_;
-  SeqLock<History> history_;  // pusher -> haptic
-  History own_;               // pusher's own copy
+  SeqLock<History> history_;      // pusher -> haptic
+  History own_;                   // pusher's own copy
   SeqLock<DeviceWrench> wrench_;  // haptic -> any
   // Pusher's counters.
   std::atomic<std::uint64_t> pushed_{0}, dropped_{0}, refused_{0};

@@ -138,12 +138,13 @@ bool Threads::start(Status& status) {
       s.haptic_timing != HapticTiming::Spin)
     return bad("haptic timing is not auto, sleep or spin");
   if (!(finite(s.spin_margin) && s.spin_margin >= 0.0 && s.spin_margin <= haptic_period))
-    return bad("spin margin must be in [0, the haptic period " + std::to_string(haptic_period) + "] s (it is " +
-               std::to_string(s.spin_margin) + ")");
+    return bad("spin margin must be in [0, the haptic period " + std::to_string(haptic_period) +
+               "] s (it is " + std::to_string(s.spin_margin) + ")");
   const char* prioritised[2] = {"haptic", "local"};
   for (int r = 0; r < 2; ++r)
     if (s.realtime_priority[r] < 0 || s.realtime_priority[r] > 99)
-      return bad(std::string(prioritised[r]) + " thread's real-time priority must be 0 (none) or in [1, 99] (it is " +
+      return bad(std::string(prioritised[r]) +
+                 " thread's real-time priority must be 0 (none) or in [1, 99] (it is " +
                  std::to_string(s.realtime_priority[r]) + ")");
   const int cores = static_cast<int>(std::thread::hardware_concurrency());
   const char* names[3] = {"haptic", "local", "global"};
@@ -232,7 +233,8 @@ double Threads::cpu_seconds(Role role) const {
   std::thread& t = const_cast<std::thread&>(threads_[int(role)]);
   clockid_t clock;
   timespec ts{};
-  if (!t.joinable() || pthread_getcpuclockid(t.native_handle(), &clock) != 0 || clock_gettime(clock, &ts) != 0)
+  if (!t.joinable() || pthread_getcpuclockid(t.native_handle(), &clock) != 0 ||
+      clock_gettime(clock, &ts) != 0)
     return -1.0;
   return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
 #else
@@ -253,14 +255,15 @@ void Threads::wait_until(Role role, double deadline) const {
 #if defined(__linux__)
   // An absolute sleep on CLOCK_MONOTONIC (steady_clock's), so neither a
   // late wake-up nor a signal makes the loop drift.
-  const auto at = epoch_.time_since_epoch() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wake));
+  const auto at = epoch_.time_since_epoch() +
+                  std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wake));
   const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(at).count();
   timespec ts{static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
   while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
   }
 #else
-  std::this_thread::sleep_until(epoch_ +
-                                std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wake)));
+  std::this_thread::sleep_until(
+      epoch_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wake)));
 #endif
   if (spin)
     while (now() < deadline) cpu_relax();
