@@ -8,6 +8,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/deps.sh
 need_packages "${CORE_PACKAGES[@]}" libbenchmark-dev python3 python3-venv
+# The C# bindings: the release ctest runs their NUnit suite (label csharp).
+need_packages "${CSHARP_PACKAGES[@]}"
 
 jobs=$(nproc)
 configure() {  # configure DIR [cmake args...]
