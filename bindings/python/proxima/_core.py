@@ -95,6 +95,8 @@ RESULT_VALUES = {name: value for value, name in ffi.typeof("proxResult").element
 _RESULTS = {cls: RESULT_VALUES[name] for name, cls in _BY_NAME.items()}
 _BY_VALUE = {RESULT_VALUES[name]: cls for name, cls in _BY_NAME.items()}
 CAPACITY = RESULT_VALUES["PROX_ERROR_CAPACITY"]
+for _cls in [Error, *_BY_NAME.values()]:
+    _cls.__module__ = "proxima"
 
 
 def error_for(result):
@@ -121,7 +123,7 @@ def invalid(message):
 
 def _enum_choices(ctype_name):
     """{"precise": 0, ...} from PROX_METHOD_PRECISE = 0, ...; the FORCE32 members left out."""
-    elements = {name: value for value, name in ffi.typeof(ctype_name).elements.items()
+    elements = {name: value for value, name in sorted(ffi.typeof(ctype_name).elements.items())
                 if not name.endswith("FORCE32")}
     prefix = os.path.commonprefix(list(elements))
     prefix = prefix[: prefix.rfind("_") + 1]
