@@ -8,16 +8,13 @@ sizes and enum values are never written out by hand.
 import dataclasses
 import os
 import re
-import sys
 
 import numpy as np
 
 from . import _header
 from ._ffi import ffi
 
-_LIBRARY_NAMES = {"win32": "proxima.dll", "darwin": "libproxima.dylib"}
-LIBRARY_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                            _LIBRARY_NAMES.get(sys.platform, "libproxima.so"))
+LIBRARY_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), _header.LIBRARY)
 lib = ffi.dlopen(LIBRARY_PATH)
 
 # ---- errors -----------------------------------------------------------------

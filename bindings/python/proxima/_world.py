@@ -322,17 +322,22 @@ class Mesh:
 
 def _flat_dtype(name):
     """The C struct's dtype with each proxVec3 as a (3,) float64 field at the
-    same offset (proxVec3 is three contiguous doubles)."""
+    same offset (proxVec3 is three contiguous doubles), and each proxBodyId's
+    index and generation as one uint64 key."""
     raw = c_dtype(name)
-    vec = c_dtype("proxVec3")
+    vec, body = c_dtype("proxVec3"), c_dtype("proxBodyId")
     assert vec.itemsize == 24 and [vec.fields[c][1] for c in "xyz"] == [0, 8, 16]
-    formats = [(np.float64, (3,)) if raw.fields[n][0] == vec else raw.fields[n][0] for n in raw.names]
+    assert [body.fields[c][1] for c in ("index1", "generation")] == [0, 4]
+    formats = []
+    for n in raw.names:
+        field = raw.fields[n][0]
+        formats.append((np.float64, (3,)) if field == vec else np.uint64 if field == body else field)
     return np.dtype({"names": list(raw.names), "formats": formats,
                      "offsets": [raw.fields[n][1] for n in raw.names], "itemsize": raw.itemsize})
 
 
 _CONTACT_FLAT = _flat_dtype("proxContact")
-_CONTACT_COPY = [(snake(n), n) for n in _CONTACT_FLAT.names if n != "other"]
+_CONTACT_FIELDS = [(snake(n), n) for n in _CONTACT_FLAT.names if n != "other"]
 _LINE_DTYPE = c_dtype("proxPolylineInfo")
 
 
@@ -344,8 +349,10 @@ class Body:
         self._idp = idp
         self.type = type
         self.mesh = mesh
-        self._contacts = ffi.new("proxContact[]", 64)
+        self._contacts = None
         self._count = ffi.new("int32_t*")
+        # The bodies its contacts named (they keep their world alive, not this body).
+        self._others = {}
 
     @property
     def pose(self):
@@ -363,6 +370,8 @@ class Body:
     def contacts(self):
         """The tool's contacts after the last step (while the threads run,
         local tracking's latest): a structured array of contact_dtype."""
+        if self._contacts is None:
+            self._contacts = ffi.new("proxContact[]", 64)
         while True:
             result = lib.proxBody_GetContacts(self._idp[0], self._contacts, len(self._contacts), self._count)
             if result != CAPACITY:
@@ -370,19 +379,24 @@ class Body:
                 break
             self._contacts = ffi.new("proxContact[]", self._count[0])
         n = self._count[0]
-        flat = np.frombuffer(ffi.buffer(self._contacts, n * _CONTACT_FLAT.itemsize), dtype=_CONTACT_FLAT)
         out = np.empty(n, dtype=contact_dtype)
-        for public, c in _CONTACT_COPY:
+        if n == 0:
+            return out
+        flat = np.frombuffer(ffi.buffer(self._contacts, n * _CONTACT_FLAT.itemsize), dtype=_CONTACT_FLAT)
+        for public, c in _CONTACT_FIELDS:
             out[public] = flat[c]
-        if n:
-            others = flat["other"]
-            keys = (others["index1"].astype(np.uint64) << np.uint64(32)) | others["generation"]
-            unique, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
-            bodies = np.empty(len(unique), dtype=object)
-            for i, row in enumerate(first):
-                bodies[i] = self.world._body(self._contacts[int(row)].other)
-            out["other"] = bodies[inverse.reshape(-1)]
+        keys = flat["other"]
+        if (keys == keys[0]).all():
+            out["other"] = self._other(int(keys[0]), 0)
+        else:
+            out["other"] = [self._other(k, i) for i, k in enumerate(keys.tolist())]
         return out
+
+    def _other(self, key, i):
+        body = self._others.get(key)
+        if body is None:
+            body = self._others[key] = self.world._body(self._contacts[i].other)
+        return body
 
     def wrench(self):
         """(force (3,) N, torque (3,) N m about the reference point, clipped)."""

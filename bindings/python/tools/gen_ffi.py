@@ -1,12 +1,12 @@
 """Generates the package's cffi module from the preprocessed proxima.h.
 
-    python gen_ffi.py proxima_cdef.h version.h OUT_DIR
+    python gen_ffi.py proxima_cdef.h version.h LIBRARY_NAME OUT_DIR
 
 Writes OUT_DIR/_ffi.py (cffi's out-of-line ABI mode: the parsed header as a
 Python module, loaded with ffi.dlopen, no compiler needed at import) and
 OUT_DIR/_header.py: what the C types lose in cffi and the package needs, read
-from the same parse: the header's version string and which struct fields are
-declared proxBool (cffi sees only int32_t).
+from the same parse: the header's version string, which struct fields are
+declared proxBool (cffi sees only int32_t), and the library's file name.
 """
 
 import os
@@ -43,7 +43,7 @@ def bool_fields(cdef):
     return out
 
 
-def main(cdef_path, version_path, out_dir):
+def main(cdef_path, version_path, library_name, out_dir):
     with open(cdef_path, encoding="utf-8") as f:
         cdef = f.read()
     with open(version_path, encoding="utf-8") as f:
@@ -61,9 +61,10 @@ def main(cdef_path, version_path, out_dir):
         f.write('"""Generated from proxima.h by tools/gen_ffi.py."""\n\n')
         f.write(f"VERSION = {match.group(1)!r}\n")
         f.write(f"BOOL_FIELDS = {bool_fields(cdef)!r}\n")
+        f.write(f"LIBRARY = {library_name!r}\n")
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 4:
-        sys.exit("usage: gen_ffi.py proxima_cdef.h version.h OUT_DIR")
+    if len(sys.argv) != 5:
+        sys.exit("usage: gen_ffi.py proxima_cdef.h version.h LIBRARY_NAME OUT_DIR")
     main(*sys.argv[1:])
