@@ -274,3 +274,14 @@ def test_every_result_has_its_exception():
         assert cls is not proxima.Error and issubclass(cls, proxima.Error), name
         assert cls("x").result == value
         assert cls("x").result_name == name
+
+
+def test_trimesh_is_never_imported_by_the_package():
+    import subprocess
+    import sys
+    code = "import sys, proxima; assert 'trimesh' not in sys.modules; print('ok')"
+    out = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True, cwd="/")
+    assert out.stdout.strip() == "ok"
+    with proxima.World() as w:
+        with pytest.raises(proxima.InvalidArgument, match="expected a trimesh.Trimesh, not list"):
+            w.create_mesh_from_trimesh([1, 2, 3])

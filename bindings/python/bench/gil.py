@@ -1,0 +1,82 @@
+"""Why the binding refuses Python device callbacks: the haptic loop's timing
+with the built-in scripted device and with a device whose two callbacks are
+Python functions (cffi callbacks; only this benchmark makes one), while the
+Python main thread sleeps or runs pure-Python work.
+
+    python gil.py [MESH] [--seconds 2]
+
+A Python callback needs the GIL on the haptic thread; while another thread
+holds it, the callback waits up to sys.getswitchinterval() (5 ms by default)
+per tick. The scripted device runs in C and never waits for Python.
+"""
+
+import argparse
+import os
+import sys
+import time
+
+import numpy as np
+
+import proxima
+from proxima._core import check, ffi, lib
+
+PATH = np.array([[x, 0, 0, 1, 0, 0, 0] for x in np.linspace(0.1592, 0.1392, 50)])
+
+
+def busy(seconds):
+    end = time.perf_counter() + seconds
+    n = 0
+    while time.perf_counter() < end:
+        n += sum(i * i for i in range(1000))
+    return n
+
+
+def run(mesh_path, device_kind, main_thread, seconds):
+    with proxima.World() as w:
+        m = w.load_mesh(mesh_path)
+        w.create_body(m, "static")
+        tool = w.create_body(m, "tool", pose=((0.16, 0, 0), (1, 0, 0, 0)))
+        keep = []
+        if device_kind == "scripted":
+            tool.set_device(w.create_scripted_device(PATH, seconds / 2 / len(PATH)))
+        else:
+            @ffi.callback("proxBool(void*, proxPose*)")
+            def read_pose(user, pose):
+                pose.position.x, pose.position.y, pose.position.z = 0.1392, 0.0, 0.0
+                pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z = 1.0, 0.0, 0.0, 0.0
+                return 1
+
+            @ffi.callback("void(void*, const proxWrench*)")
+            def write_wrench(user, wrench):
+                pass
+
+            d = ffi.new("proxDeviceDef*", lib.proxDefaultDeviceDef())
+            d.readPose, d.writeWrench = read_pose, write_wrench
+            keep += [read_pose, write_wrench]
+            check(lib.proxBody_SetDevice(tool._idp[0], d))
+        w.start_threads(haptic_rate=1000)
+        if main_thread == "busy":
+            busy(seconds)
+        else:
+            time.sleep(seconds)
+        w.stop_threads()
+        return w.thread_stats("haptic")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("mesh", nargs="?", default=os.path.join(os.environ.get("PROXIMA_ASSETS", "."), "bunny.obj"))
+    parser.add_argument("--seconds", type=float, default=2.0)
+    args = parser.parse_args()
+    print(f"haptic loop at 1 kHz for {args.seconds:g} s; switch interval {sys.getswitchinterval() * 1e3:g} ms")
+    print(f"{'device':9s} {'main thread':12s} {'achieved Hz':>11s} {'period p50':>11s} {'p99 ms':>8s} "
+          f"{'max ms':>8s} {'overruns':>9s}")
+    for device in ("scripted", "python"):
+        for main_thread in ("sleeping", "busy"):
+            s = run(args.mesh, device, main_thread, args.seconds)
+            print(f"{device:9s} {main_thread:12s} {s.achieved_rate:11.1f} {s.period_p50 * 1e3:11.3f} "
+                  f"{s.period_p99 * 1e3:8.3f} {s.period_max * 1e3:8.3f} {s.overruns:9d}")
+
+
+if __name__ == "__main__":
+    main()
