@@ -165,7 +165,9 @@ class World:
         idp = ffi.new("proxBodyId*")
         check(lib.proxWorld_CreateBody(self._idp[0], d, idp))
         key = _key(idp[0])
-        self._body_info[key] = (type, mesh)
+        # The mesh's id, not the Mesh: a Mesh holds its world, and the world
+        # must not hold itself (it is freed as soon as the script drops it).
+        self._body_info[key] = (type, ffi.new("proxMeshId*", mesh._idp[0]))
         body = Body(self, idp, type, mesh)
         self._bodies[key] = body
         return body
@@ -176,8 +178,8 @@ class World:
         body = self._bodies.get(key)
         if body is None:
             idp = ffi.new("proxBodyId*", id_value)
-            type_name, mesh = self._body_info.get(key, (None, None))
-            body = Body(self, idp, type_name, mesh)
+            type_name, mesh_idp = self._body_info.get(key, (None, None))
+            body = Body(self, idp, type_name, self._mesh(mesh_idp) if mesh_idp is not None else None)
             self._bodies[key] = body
         return body
 

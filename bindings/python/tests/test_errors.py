@@ -195,6 +195,25 @@ def test_garbage_collection_of_a_world_with_live_bodies():
     assert world_ref() is None and not lib.proxWorld_IsValid(world_id[0])
 
 
+def test_a_dropped_world_is_freed_at_once():
+    # No reference cycle: the world goes when its last object does, without
+    # waiting for the cyclic garbage collector.
+    gc.disable()
+    try:
+        w = proxima.World()
+        m = w.load_mesh(BUNNY)
+        rock = w.create_body(m, "static")
+        tool = w.create_body(m, "tool", pose=((0.14, 0, 0), (1, 0, 0, 0)))
+        w.step()
+        contacts = tool.contacts()
+        device = w.create_scripted_device([((0, 0, 0), (1, 0, 0, 0))], 0.1)
+        world_ref, world_id = weakref.ref(w), ffi.new("proxWorldId*", w._idp[0])
+        del w, m, rock, tool, contacts, device
+        assert world_ref() is None and not lib.proxWorld_IsValid(world_id[0])
+    finally:
+        gc.enable()
+
+
 def test_world_dropped_on_another_thread_warns_and_is_kept():
     holder = [proxima.World()]
     world_id = ffi.new("proxWorldId*", holder[0]._idp[0])
