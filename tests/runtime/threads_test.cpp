@@ -6,6 +6,7 @@
 // never allocate. At rest the threads must agree with the deterministic step.
 #include "runtime/threads.h"
 #include "runtime/scripted_device.h"
+#include "runtime/stream_device.h"
 #include "runtime/world.h"
 #include "support/scenes.h"
 
@@ -56,6 +57,7 @@ using Clock = std::chrono::steady_clock;
 struct FaultyDevice {
   enum Fault { None = 0, NaNPose = 1, NoPose = 2, Teleport = 3 };
   explicit FaultyDevice(ScriptedDevice& scripted) : inner(scripted.device()) {}
+  explicit FaultyDevice(const Device& device) : inner(device) {}
 
   Device device() { return {&FaultyDevice::read, &FaultyDevice::write, this, nullptr}; }
 
@@ -301,6 +303,45 @@ TEST_F(ThreadsTest, ASmallSnapshotKeepsTheClosestContacts) {
     return contacts.size() == expected_.lmds.size();
   })) << "the game thread sees every contact, not only the one the haptic loop gets";
   expect_safe_output();
+}
+
+// An engine's thread pushes poses at 90 Hz through the streamed device: the
+// tool approaches and comes to rest at the deterministic step's wrench, and
+// neither the haptic thread nor the pushing thread allocates.
+TEST_F(ThreadsTest, StreamedDeviceDrivesTheToolWithoutAllocating) {
+  StreamSettings stream_settings;
+  stream_settings.mode = StreamMode::Interpolate;
+  StreamDevice stream(stream_settings);
+  FaultyDevice marked(stream.device());
+  world_->set_device(tool_, marked.device());
+  const ScriptedDevice path({ScriptedPose::of(far_), ScriptedPose::of(near_)}, 0.5, false);
+  std::atomic<bool> stop{false};
+  std::thread engine([&] {
+    t_on_haptic_thread = true;  // counted like the haptic thread: pushing must not allocate either
+    const double start = stream_clock();
+    while (!stop.load()) {
+      const double now = stream_clock();
+      const ScriptedPose p = path.pose_at(now - start);
+      StreamSample sample;
+      sample.time = now;
+      for (int k = 0; k < 3; ++k) sample.position[k] = p.position[k];
+      for (int k = 0; k < 4; ++k) sample.rotation[k] = p.rotation[k];
+      stream.push(sample);
+      std::this_thread::sleep_for(std::chrono::microseconds(11111));
+    }
+  });
+  Status status;
+  ASSERT_TRUE(world_->start_threads(settings_, status)) << status.message();
+  const bool rested = wait_until([&] { return at_rest_force(); });
+  stop.store(true);
+  engine.join();
+  EXPECT_TRUE(rested) << "the streamed tool never reached the deterministic answer at rest";
+  const StreamStats st = stream.stats();
+  EXPECT_GT(st.pushed, 20u);
+  EXPECT_GT(st.reads, 100u);
+  const DeviceWrench w = stream.wrench();
+  EXPECT_TRUE(std::isfinite(w.force[0] + w.force[1] + w.force[2]));
+  EXPECT_EQ(g_haptic_allocations.load(), 0) << "the haptic thread or the pusher allocated";
 }
 
 TEST_F(ThreadsTest, BadSettingsAreRefusedByName) {

@@ -371,6 +371,79 @@ typedef struct proxScriptedDeviceRecord {
 /* Game thread. */
 PROX_API proxResult proxScriptedDevice_GetRecord(proxScriptedDeviceId device, proxScriptedDeviceRecord* record);
 
+/* ---- the streamed device ----------------------------------------------------------
+ * The device for engines, bindings and XR (docs/devices.md): the application
+ * pushes timestamped tool poses from a thread of its own at its own rate (a
+ * frame's 60-120 Hz), the haptic loop renders the pose at its 1 kHz from the
+ * latest samples, and the wrench it renders is read back from any thread
+ * (for a rumble or an XR vibration the application drives itself). Pushing
+ * and reading never lock, allocate or wait, and the haptic loop never waits
+ * on the pusher. A streamed device lives as long as its world; attach it to
+ * one tool with proxBody_SetDevice. */
+typedef struct proxStreamDeviceId {
+  uint32_t index1; /* index + 1; 0 is null */
+  uint32_t reserved;
+  proxWorldId world;
+} proxStreamDeviceId;
+
+typedef enum proxStreamMode {
+  PROX_STREAM_HOLD = 0,        /* the newest sample's pose */
+  PROX_STREAM_INTERPOLATE = 1, /* the pose `delay` ago, between the samples around it; holds past the newest */
+  PROX_STREAM_EXTRAPOLATE = 2, /* the pose now: between samples, or predicted from the newest two (at most
+                                  maxExtrapolation past the newest, then held) */
+  PROX_STREAM_MODE_FORCE32 = 0x7FFFFFFF
+} proxStreamMode;
+
+typedef struct proxStreamDeviceDef {
+  proxStreamMode mode;     /* default PROX_STREAM_INTERPOLATE */
+  double delay;            /* s, >= 0: INTERPOLATE's latency (default 1/90: one 90 Hz frame) */
+  double maxExtrapolation; /* s, >= 0: EXTRAPOLATE's furthest prediction past the newest sample (default 0.02) */
+  double staleAfter;       /* s, > 0: nothing pushed for this long: no pose, the force fades out (default 0.05) */
+  int32_t internalValue;
+  int32_t reserved;
+} proxStreamDeviceDef;
+
+/* What a streamed device saw. Counts since it was created. */
+typedef struct proxStreamDeviceStats {
+  uint64_t samplesPushed;     /* accepted */
+  uint64_t samplesDropped;    /* no newer than the newest accepted: late (out of order) or duplicate */
+  uint64_t samplesRefused;    /* invalid (non-finite, zero quaternion, bad time): PROX_ERROR_INVALID_ARGUMENT */
+  uint64_t reads;             /* haptic ticks that asked for the pose */
+  uint64_t staleTicks;        /* ... and got none: nothing pushed yet, or not for staleAfter */
+  uint64_t extrapolatedTicks; /* ... rendered past the newest sample (EXTRAPOLATE: predicted; else held) */
+  double meanSampleInterval;  /* s, between accepted samples' times */
+  double maxSampleInterval;   /* s */
+  double maxExtrapolation;    /* s: the furthest a rendered pose was predicted past the newest sample */
+  double lastSampleAge;       /* s: now minus the newest sample's time, at the last read */
+} proxStreamDeviceStats;
+
+/* Seconds on the steady, monotonic clock proxStreamDevice_PushPose's times
+ * are on (CLOCK_MONOTONIC on Linux; std::chrono::steady_clock). Any thread. */
+PROX_API double proxGetTime(void);
+
+PROX_API proxStreamDeviceDef proxDefaultStreamDeviceDef(void);
+/* Game thread. At most 1024 streamed devices exist at once in the process
+ * (PROX_ERROR_CAPACITY beyond). */
+PROX_API proxResult proxWorld_CreateStreamDevice(proxWorldId world, const proxStreamDeviceDef* def,
+                                                 proxStreamDeviceId* device);
+/* Hands the device the tool's world pose at `timeSeconds` (on proxGetTime's
+ * clock; when the pose was or will be true). Any thread, but one at a time:
+ * a second thread pushing at the same moment gets PROX_ERROR_WRONG_THREAD.
+ * Lock-free and allocation-free. A sample no newer than the newest accepted
+ * is dropped (counted, not an error); a non-finite pose, a zero quaternion,
+ * or a NaN, infinite or negative time is refused with
+ * PROX_ERROR_INVALID_ARGUMENT and never reaches the haptic loop. Other
+ * quaternions are normalised. PROX_ERROR_INVALID_HANDLE once the world is
+ * destroyed. */
+PROX_API proxResult proxStreamDevice_PushPose(proxStreamDeviceId device, const proxPose* pose, double timeSeconds);
+/* The wrench the haptic loop last handed the device (zero before the
+ * first), never torn. Any thread; lock-free. */
+PROX_API proxResult proxStreamDevice_GetWrench(proxStreamDeviceId device, proxWrench* wrench);
+/* The def that attaches it with proxBody_SetDevice. Game thread. */
+PROX_API proxResult proxStreamDevice_GetDeviceDef(proxStreamDeviceId device, proxDeviceDef* def);
+/* Game thread. */
+PROX_API proxResult proxStreamDevice_GetStats(proxStreamDeviceId device, proxStreamDeviceStats* stats);
+
 /* ---- threads --------------------------------------------------------------------- */
 
 typedef struct proxThreadsDef {
