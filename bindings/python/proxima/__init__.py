@@ -14,9 +14,9 @@ A thin layer over the C API (proxima.h, loaded with cffi); docs/python.md.
 from ._core import (Busy, CapacityError, Error, FileError, InternalError, InvalidArgument, InvalidHandle,
                     InvalidMesh, ParseError, Unsupported, VersionMismatch, WrongThread, c_dtype,
                     version_string)
-from ._devices import ScriptedDevice
+from ._devices import ScriptedDevice, StreamDevice, get_time
 from ._types import (ForceSettings, IntersectionStats, MeshInfo, MeshStats, SafetyStats, ScriptedDeviceRecord,
-                     SearchStats, ThreadStats, TrackStats, WorldStats, contact_dtype)
+                     SearchStats, StreamDeviceStats, ThreadStats, TrackStats, WorldStats, contact_dtype)
 from ._world import Body, Mesh, World, distance, force_preset
 
 #: "major.minor.patch": the library's proxGetVersion(), checked at import
@@ -24,7 +24,8 @@ from ._world import Body, Mesh, World, distance, force_preset
 __version__ = version_string()
 
 __all__ = [
-    "__version__", "World", "Mesh", "Body", "ScriptedDevice", "distance", "force_preset", "c_dtype",
+    "__version__", "World", "Mesh", "Body", "ScriptedDevice", "StreamDevice", "get_time", "distance",
+    "force_preset", "c_dtype", "StreamDeviceStats",
     "contact_dtype", "ForceSettings", "MeshInfo", "MeshStats", "WorldStats", "SearchStats", "TrackStats",
     "IntersectionStats", "ThreadStats", "SafetyStats", "ScriptedDeviceRecord",
     "Error", "InvalidArgument", "InvalidHandle", "InvalidMesh", "FileError", "ParseError", "Unsupported",

@@ -22,6 +22,8 @@ IntersectionStats = make_dataclass("proxIntersectionStats", "IntersectionStats",
 ThreadStats = make_dataclass("proxThreadStats", "ThreadStats", "One thread's timing (proxThreadStats).")
 SafetyStats = make_dataclass("proxSafetyStats", "SafetyStats",
                              "The haptic loop's safety decisions (proxSafetyStats).")
+StreamDeviceStats = make_dataclass("proxStreamDeviceStats", "StreamDeviceStats",
+                                   "What a streamed device saw (proxStreamDeviceStats).")
 ScriptedDeviceRecord = make_dataclass("proxScriptedDeviceRecord", "ScriptedDeviceRecord",
                                       "What a scripted device was handed (proxScriptedDeviceRecord).")
 

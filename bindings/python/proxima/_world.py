@@ -224,16 +224,7 @@ class World:
         local_rate, global_rate, haptic_core, ..., max_contacts, stale_after,
         max_force_rate, max_torque_rate, trust_distance)."""
         d = ffi.new("proxThreadsDef*", lib.proxDefaultThreadsDef())
-        fields = {snake(name): (name, field.type.cname) for name, field in ffi.typeof("proxThreadsDef").fields
-                  if name not in ("internalValue", "reserved")}
-        for key, value in settings.items():
-            if key not in fields:
-                raise invalid(f"start_threads: unknown setting {key!r}; the settings are {', '.join(fields)}")
-            name, cname = fields[key]
-            if cname == "double":
-                setattr(d, name, real(value, f"start_threads: {key}"))
-            else:
-                setattr(d, name, integer(value, f"start_threads: {key}"))
+        _fill_settings(d, "proxThreadsDef", settings, "start_threads")
         check(lib.proxWorld_StartThreads(self._idp[0], d))
 
     def stop_threads(self):
@@ -266,6 +257,20 @@ class World:
         check(lib.proxWorld_CreateScriptedDevice(self._idp[0], d, idp))
         return ScriptedDevice(self, idp)
 
+    def create_stream_device(self, mode="interpolate", **settings):
+        """A streamed device: your thread pushes timestamped poses
+        (StreamDevice.push_pose), the haptic loop renders them at its rate.
+        `mode` is "hold", "interpolate" or "extrapolate"; the settings are
+        proxStreamDeviceDef's other fields in snake_case (delay,
+        max_extrapolation, stale_after; seconds)."""
+        from ._devices import StreamDevice
+        d = ffi.new("proxStreamDeviceDef*", lib.proxDefaultStreamDeviceDef())
+        d.mode = enum_value("proxStreamMode", mode, "create_stream_device: mode")
+        _fill_settings(d, "proxStreamDeviceDef", settings, "create_stream_device", skip=("mode",))
+        idp = ffi.new("proxStreamDeviceId*")
+        check(lib.proxWorld_CreateStreamDevice(self._idp[0], d, idp))
+        return StreamDevice(self, idp)
+
     def load_scripted_device(self, path, seconds_per_pose, loop=False):
         """A scripted device whose path is read from a file: one pose per
         line, "tx ty tz qw qx qy qz", '#' comments."""
@@ -275,6 +280,20 @@ class World:
                                                real(seconds_per_pose, "load_scripted_device: seconds_per_pose"),
                                                bool(loop), idp))
         return ScriptedDevice(self, idp)
+
+
+def _fill_settings(d, struct_name, settings, what, skip=()):
+    """Sets a def's fields from keyword arguments named in snake_case."""
+    fields = {snake(name): (name, field.type.cname) for name, field in ffi.typeof(struct_name).fields
+              if name not in ("internalValue", "reserved") and snake(name) not in skip}
+    for key, value in settings.items():
+        if key not in fields:
+            raise invalid(f"{what}: unknown setting {key!r}; the settings are {', '.join(fields)}")
+        name, cname = fields[key]
+        if cname in ("double", "float"):
+            setattr(d, name, real(value, f"{what}: {key}"))
+        else:
+            setattr(d, name, integer(value, f"{what}: {key}"))
 
 
 def _array(value, what, kinds, noun):
@@ -436,15 +455,20 @@ class Body:
 
     def set_device(self, device):
         """Lets a device hold this tool while the threads run (None: none).
-        Devices are built in (World.create_scripted_device): a Python
-        callback cannot keep a 1 kHz haptic loop's time (docs/python.md)."""
+        Devices are built in (World.create_stream_device,
+        World.create_scripted_device): a Python callback cannot keep a 1 kHz
+        haptic loop's time (docs/python.md)."""
         if device is None:
             check(lib.proxBody_SetDevice(self._idp[0], ffi.NULL))
             return
         device_def = getattr(device, "_device_def", None)
         if device_def is None:
-            raise invalid(f"set_device: expected a device of proxima (World.create_scripted_device) or None, "
-                          f"not {device!r}; Python callbacks cannot drive the haptic loop (docs/python.md)")
+            raise invalid(f"set_device: expected a device of proxima (World.create_stream_device, "
+                          f"World.create_scripted_device) or None, not {device!r}; Python callbacks cannot "
+                          "drive the haptic loop: push poses to a stream device (docs/python.md)")
+        if getattr(device, "world", None) is not self.world:
+            # The C API cannot tell, and the device would die with its own world.
+            raise invalid(f"set_device: {device!r} belongs to another world than this body")
         check(lib.proxBody_SetDevice(self._idp[0], device_def()))
 
     def destroy(self):
