@@ -1,7 +1,8 @@
 """Why the binding refuses Python device callbacks: the haptic loop's timing
-with the built-in scripted device and with a device whose two callbacks are
-Python functions (cffi callbacks; only this benchmark makes one), while the
-Python main thread sleeps or runs pure-Python work.
+with the built-in scripted device, with the streamed device fed from a
+Python thread at 90 Hz, and with a device whose two callbacks are Python
+functions (cffi callbacks; only this benchmark makes one), while the Python
+main thread sleeps or runs pure-Python work.
 
     python gil.py [MESH] [--seconds 2]
 
@@ -13,6 +14,7 @@ per tick. The scripted device runs in C and never waits for Python.
 import argparse
 import os
 import sys
+import threading
 import time
 
 import numpy as np
@@ -37,8 +39,20 @@ def run(mesh_path, device_kind, main_thread, seconds):
         w.create_body(m, "static")
         tool = w.create_body(m, "tool", pose=((0.16, 0, 0), (1, 0, 0, 0)))
         keep = []
+        stop = threading.Event()
+        pusher = None
         if device_kind == "scripted":
             tool.set_device(w.create_scripted_device(PATH, seconds / 2 / len(PATH)))
+        elif device_kind == "stream":
+            hand = w.create_stream_device()
+            tool.set_device(hand)
+
+            def push():
+                while not stop.is_set():
+                    hand.push_pose((0.1392, 0, 0), (1, 0, 0, 0))
+                    time.sleep(1 / 90)
+
+            pusher = threading.Thread(target=push)
         else:
             @ffi.callback("proxBool(void*, proxPose*)")
             def read_pose(user, pose):
@@ -55,12 +69,18 @@ def run(mesh_path, device_kind, main_thread, seconds):
             keep += [read_pose, write_wrench]
             check(lib.proxBody_SetDevice(tool._idp[0], d))
         w.start_threads(haptic_rate=1000)
+        if pusher:
+            pusher.start()
         if main_thread == "busy":
             busy(seconds)
         else:
             time.sleep(seconds)
+        stop.set()
+        if pusher:
+            pusher.join()
         w.stop_threads()
-        return w.thread_stats("haptic")
+        samples = hand.stats.max_sample_interval * 1e3 if pusher else float("nan")
+        return w.thread_stats("haptic"), samples
 
 
 def main():
@@ -70,12 +90,12 @@ def main():
     args = parser.parse_args()
     print(f"haptic loop at 1 kHz for {args.seconds:g} s; switch interval {sys.getswitchinterval() * 1e3:g} ms")
     print(f"{'device':9s} {'main thread':12s} {'achieved Hz':>11s} {'period p50':>11s} {'p99 ms':>8s} "
-          f"{'max ms':>8s} {'overruns':>9s}")
-    for device in ("scripted", "python"):
+          f"{'max ms':>8s} {'overruns':>9s} {'max push gap ms':>16s}")
+    for device in ("scripted", "stream", "python"):
         for main_thread in ("sleeping", "busy"):
-            s = run(args.mesh, device, main_thread, args.seconds)
+            s, gap = run(args.mesh, device, main_thread, args.seconds)
             print(f"{device:9s} {main_thread:12s} {s.achieved_rate:11.1f} {s.period_p50 * 1e3:11.3f} "
-                  f"{s.period_p99 * 1e3:8.3f} {s.period_max * 1e3:8.3f} {s.overruns:9d}")
+                  f"{s.period_p99 * 1e3:8.3f} {s.period_max * 1e3:8.3f} {s.overruns:9d} {gap:16.1f}")
 
 
 if __name__ == "__main__":
