@@ -30,6 +30,7 @@ const char* kUsage =
     "  proxima run [A B] [--device scripted|stream] [--poses FILE] [--seconds S] [--hold S]\n"
     "              [--method precise|original] [--force hard|soft] [--json FILE]\n"
     "              [--stream-rate HZ] [--stream-mode hold|interpolate|extrapolate]\n"
+    "              [--haptic-timing auto|spin|sleep] [--spin-margin S] [--realtime] [--lock-memory]\n"
     "  proxima --version\n";
 
 }  // namespace

@@ -2,6 +2,8 @@
 #include "cli.h"
 
 #include <atomic>
+#include <cerrno>
+#include <cstring>
 
 namespace proxcli {
 namespace {
@@ -80,11 +82,29 @@ struct Recording {
   }
 };
 
+// --realtime's SCHED_FIFO priorities: the haptic loop above local tracking,
+// both above every ordinary thread and below the kernel's own (99).
+constexpr int32_t kHapticPriority = 80, kLocalPriority = 70;
+
+// What the system granted a thread's real-time request, in words.
+std::string grant_text(const proxThreadStats& s, int32_t asked) {
+  if (asked == 0) return "not asked";
+  if (s.realtimePriority > 0) return "SCHED_FIFO " + std::to_string(s.realtimePriority);
+  return std::string("refused: ") + std::strerror(s.realtimeError) +
+         (s.realtimeError == EPERM ? " (needs root, CAP_SYS_NICE or an RLIMIT_RTPRIO)" : "");
+}
+
 proxStreamMode parse_stream_mode(const std::string& s) {
   if (s == "hold") return PROX_STREAM_HOLD;
   if (s == "interpolate") return PROX_STREAM_INTERPOLATE;
   if (s == "extrapolate") return PROX_STREAM_EXTRAPOLATE;
   fail("--stream-mode: '" + s + "' is not hold, interpolate or extrapolate");
+}
+
+std::string fmt_ms(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g ms", seconds * 1e3);
+  return text;
 }
 
 const char* stream_mode_name(proxStreamMode m) {
@@ -106,6 +126,7 @@ int run(Args& args) {
   double seconds = 2.0, hold = 0.5, stream_rate = 90.0;
   proxStreamMode stream_mode = PROX_STREAM_INTERPOLATE;
   Settings settings = preset(PROX_FORCE_PRESET_HARD);
+  proxThreadsDef threads = proxDefaultThreadsDef();
   if (!args.empty() && args.peek().rfind("--", 0) != 0) {
     path_a = args.next("mesh A");
     path_b = args.next("mesh B");
@@ -139,6 +160,19 @@ int run(Args& args) {
       if (!(stream_rate >= 1.0 && stream_rate <= 10000.0)) fail("--stream-rate must be in [1, 10000] Hz");
     } else if (opt == "--stream-mode") {
       stream_mode = parse_stream_mode(args.next("--stream-mode value"));
+    } else if (opt == "--haptic-timing") {
+      const std::string timing = args.next("--haptic-timing value");
+      if (timing == "spin") threads.hapticTiming = PROX_TIMING_SPIN;
+      else if (timing == "sleep") threads.hapticTiming = PROX_TIMING_SLEEP;
+      else if (timing == "auto") threads.hapticTiming = PROX_TIMING_AUTO;
+      else fail("--haptic-timing: '" + timing + "' is not auto, spin or sleep");
+    } else if (opt == "--spin-margin") {
+      threads.spinMargin = parse_number(args.next("--spin-margin value"), "--spin-margin");
+    } else if (opt == "--realtime") {
+      threads.hapticPriority = kHapticPriority;
+      threads.localPriority = kLocalPriority;
+    } else if (opt == "--lock-memory") {
+      threads.lockMemory = 1;
     } else {
       fail("run: unknown option '" + opt + "'");
     }
@@ -186,7 +220,6 @@ int run(Args& args) {
   }
   check(proxBody_SetDevice(scene.b(), &device_def));
 
-  const proxThreadsDef threads = proxDefaultThreadsDef();
   check(proxWorld_StartThreads(scene.world(), &threads));
   // The engine's frame loop for the streamed device: the pose the path has
   // now, stamped now, once a frame (its own thread, as an engine's would be).
@@ -243,6 +276,17 @@ int run(Args& args) {
                 s.updateP99 * 1e3, static_cast<unsigned long long>(s.updates),
                 static_cast<unsigned long long>(s.overruns));
   }
+  const bool spun = stats[0].timing == PROX_TIMING_SPIN;
+  std::printf("haptic timing: %s%s%s; real time: haptic %s, local %s",
+              threads.hapticTiming == PROX_TIMING_AUTO ? "auto, so " : "", spun ? "spin" : "sleep",
+              spun
+                  ? (" (the last " + fmt_ms(threads.spinMargin) + " of each period)").c_str()
+                  : "",
+              grant_text(stats[0], threads.hapticPriority).c_str(), grant_text(stats[1], threads.localPriority).c_str());
+  if (threads.lockMemory)
+    std::printf("; memory %s", stats[0].memoryLocked ? "locked"
+                                                     : (std::string("not locked: ") + std::strerror(stats[0].memoryLockError)).c_str());
+  std::printf("\n");
   proxSafetyStats safety;
   check(proxWorld_GetSafetyStats(scene.world(), &safety));
   DeviceFigures device;
@@ -282,6 +326,9 @@ int run(Args& args) {
     j.begin_object();
     j.key("method").value(method_name(settings.method));
     j.key("cutoff").value(settings.cutoff);
+    j.key("haptic_timing").value(stats[0].timing == PROX_TIMING_SPIN ? "spin" : "sleep");
+    j.key("spin_margin_ms").value(threads.spinMargin * 1e3);
+    j.key("memory_locked").value(stats[0].memoryLocked != 0);
     j.key("threads").begin_object();
     for (int i = 0; i < 3; ++i) {
       const proxThreadStats& s = stats[i];
@@ -290,12 +337,17 @@ int run(Args& args) {
       j.key("achieved_hz").value(s.achievedRate);
       j.key("period_p50_ms").value(s.periodP50 * 1e3);
       j.key("period_p99_ms").value(s.periodP99 * 1e3);
+      j.key("period_p999_ms").value(s.periodP999 * 1e3);
       j.key("period_max_ms").value(s.periodMax * 1e3);
       j.key("update_p50_ms").value(s.updateP50 * 1e3);
       j.key("update_p99_ms").value(s.updateP99 * 1e3);
       j.key("update_max_ms").value(s.updateMax * 1e3);
       j.key("updates").value(count(s.updates));
       j.key("overruns").value(count(s.overruns));
+      if (i < 2) {
+        j.key("realtime_priority").value(s.realtimePriority);
+        j.key("realtime_error").value(s.realtimeError);
+      }
       j.end_object();
     }
     j.end_object();

@@ -205,6 +205,31 @@ class CliTest(unittest.TestCase):
         last = [l.split() for l in r.stdout.splitlines() if l.strip() and l.split()[0].replace(".", "").isdigit()][-1]
         self.assertGreater(float(last[3]), 0.0)
 
+    def test_run_takes_the_timing_and_real_time_options(self):
+        json_path = os.path.join(self.dir.name, "run.json")
+        r = run("run", self.tri, self.tri, "--seconds", "0.2", "--hold", "0", "--haptic-timing", "spin",
+                "--realtime", "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("haptic timing: spin", r.stdout)
+        with open(json_path) as f:
+            report = json.load(f)
+        self.assertEqual(report["haptic_timing"], "spin")
+        haptic = report["threads"]["haptic"]
+        # Granted (80) where the system allows it; else refused with a reason, and the run goes on.
+        if haptic["realtime_priority"] == 0:
+            self.assertNotEqual(haptic["realtime_error"], 0)
+            self.assertIn("refused", r.stdout)
+        else:
+            self.assertEqual(haptic["realtime_priority"], 80)
+            self.assertEqual(report["threads"]["local"]["realtime_priority"], 70)
+        self.assertGreater(haptic["updates"], 50)
+        self.assertLessEqual(haptic["period_p99_ms"], haptic["period_p999_ms"])
+        r = run("run", self.tri, self.tri, "--seconds", "0.1", "--hold", "0", "--haptic-timing", "sleep",
+                "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        with open(json_path) as f:
+            self.assertEqual(json.load(f)["haptic_timing"], "sleep")
+
     def test_errors_are_clear_and_exit_non_zero(self):
         cases = [
             (("info", os.path.join(self.dir.name, "missing.obj")), "missing.obj"),
@@ -230,6 +255,8 @@ class CliTest(unittest.TestCase):
             (("run", "--method", "reference"), "real time"),
             (("run", "--wobble"), "unknown option"),
             (("run", "--device", "joystick"), "--device"),
+            (("run", "--haptic-timing", "fast"), "--haptic-timing"),
+            (("run", "--spin-margin", "0.5"), "spin margin"),
             (("run", "--device", "stream", "--stream-rate", "0"), "--stream-rate"),
             (("run", "--device", "stream", "--stream-mode", "guess"), "--stream-mode"),
         ]

@@ -446,11 +446,22 @@ PROX_API proxResult proxStreamDevice_GetStats(proxStreamDeviceId device, proxStr
 
 /* ---- threads --------------------------------------------------------------------- */
 
+/* How the haptic loop waits for its next period (docs/threading.md,
+ * "Keeping the beat"). Both wait for an absolute deadline, so they never drift. */
+typedef enum proxHapticTiming {
+  PROX_TIMING_AUTO = 0,  /* SPIN when the haptic thread runs real-time or on a core of its own, else SLEEP */
+  PROX_TIMING_SPIN = 1,  /* sleep to spinMargin before the deadline, then spin to it: on time, costs CPU */
+  PROX_TIMING_SLEEP = 2, /* sleep to the deadline: no CPU between ticks, late by the OS's wake-up */
+  PROX_TIMING_FORCE32 = 0x7FFFFFFF
+} proxHapticTiming;
+
 typedef struct proxThreadsDef {
   double hapticRate; /* Hz: the haptic loop (default 1000) */
   double localRate;  /* Hz: local tracking (default 1000; 0: back to back) */
   double globalRate; /* Hz: global search (default 0: back to back, idle while nothing moves) */
-  /* The core each thread is pinned to; -1 (the default): not pinned. */
+  /* The core each thread is pinned to; -1: not pinned. The default, where
+   * the process may use at least four cores: the haptic and local threads
+   * on the last two, one each, the global search unpinned; else none. */
   int32_t hapticCore, localCore, globalCore;
   int32_t maxContacts;  /* per tool handed to the haptic loop, the closest first (default 1024) */
   double staleAfter;    /* s: contacts older than this fade the force out (default 0.05) */
@@ -460,6 +471,17 @@ typedef struct proxThreadsDef {
    * one are not rendered (a teleport; the force fades out until tracking
    * catches up). 0 (the default): the world's cutoff. */
   double trustDistance;
+  proxHapticTiming hapticTiming; /* default PROX_TIMING_AUTO */
+  /* SCHED_FIFO priority (1-99) asked for the haptic thread; 0 (the default):
+   * none. Needs root, CAP_SYS_NICE or an RLIMIT_RTPRIO of at least it; a
+   * refusal is reported in proxThreadStats, never an error. */
+  int32_t hapticPriority;
+  double spinMargin;      /* s, in [0, the haptic period]: PROX_TIMING_SPIN's spin (default 0.0002) */
+  int32_t localPriority;  /* the same for the local tracking thread (default 0) */
+  /* Lock the process's memory (mlockall(MCL_CURRENT)) once the threads
+   * run, so no page the haptic loop touches is paged out. Process-wide and
+   * never undone by Proxima; reported in proxThreadStats. Default 0. */
+  proxBool lockMemory;
   int32_t internalValue;
   int32_t reserved;
 } proxThreadsDef;
@@ -495,6 +517,13 @@ typedef struct proxThreadStats {
   double updateP50, updateP99, updateMax; /* s of work per iteration */
   uint64_t updates;
   uint64_t overruns; /* iterations that missed the next period's start */
+  double periodP999; /* s: the 99.9th percentile of the period */
+  int32_t realtimePriority; /* the SCHED_FIFO priority granted; 0: none asked, or refused */
+  int32_t realtimeError;    /* the errno that refused it (1, EPERM: no privilege); 0 */
+  proxBool memoryLocked;    /* haptic thread's stats: lockMemory was granted */
+  int32_t memoryLockError;  /* ... or the errno that refused it (ENOMEM, EPERM: RLIMIT_MEMLOCK); 0 */
+  proxHapticTiming timing;  /* haptic thread's stats: SPIN or SLEEP, as AUTO resolved */
+  int32_t reserved;
 } proxThreadStats;
 
 /* Game thread. */

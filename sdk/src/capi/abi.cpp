@@ -21,8 +21,8 @@ static_assert(sizeof(proxDeviceDef) == 32, "ABI");
 static_assert(sizeof(proxScriptedDeviceId) == 16, "ABI");
 static_assert(sizeof(proxScriptedDeviceDef) == 32, "ABI");
 static_assert(sizeof(proxScriptedDeviceRecord) == 104, "ABI");
-static_assert(sizeof(proxThreadsDef) == 80, "ABI");
-static_assert(sizeof(proxThreadStats) == 88, "ABI");
+static_assert(sizeof(proxThreadsDef) == 104, "ABI");
+static_assert(sizeof(proxThreadStats) == 120, "ABI");
 static_assert(sizeof(proxSafetyStats) == 48, "ABI");
 static_assert(sizeof(proxResult) == 4 && sizeof(proxMethod) == 4 && sizeof(proxBodyType) == 4 &&
                   sizeof(proxThread) == 4,
@@ -36,3 +36,4 @@ static_assert(sizeof(proxStreamDeviceId) == 16, "ABI");
 static_assert(sizeof(proxStreamDeviceDef) == 40, "ABI");
 static_assert(sizeof(proxStreamDeviceStats) == 80, "ABI");
 static_assert(sizeof(proxStreamMode) == 4, "ABI");
+static_assert(sizeof(proxHapticTiming) == 4, "ABI");

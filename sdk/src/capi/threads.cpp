@@ -14,14 +14,21 @@ proxThreadsDef proxDefaultThreadsDef(void) {
   d.hapticRate = s.haptic_rate;
   d.localRate = s.local_rate;
   d.globalRate = s.global_rate;
-  d.hapticCore = s.cores[0];
-  d.localCore = s.cores[1];
-  d.globalCore = s.cores[2];
+  int cores[3];
+  runtime::default_cores(cores);
+  d.hapticCore = cores[0];
+  d.localCore = cores[1];
+  d.globalCore = cores[2];
   d.maxContacts = s.max_contacts;
   d.staleAfter = s.stale_after;
   d.maxForceRate = s.max_force_rate;
   d.maxTorqueRate = s.max_torque_rate;
   d.trustDistance = s.trust_distance;
+  d.hapticTiming = PROX_TIMING_AUTO;
+  d.spinMargin = s.spin_margin;
+  d.hapticPriority = s.realtime_priority[0];
+  d.localPriority = s.realtime_priority[1];
+  d.lockMemory = s.lock_memory ? 1 : 0;
   d.internalValue = kDefCookie;
   return d;
 }
@@ -44,6 +51,23 @@ proxResult proxWorld_StartThreads(proxWorldId world, const proxThreadsDef* def) 
     s.max_force_rate = def->maxForceRate;
     s.max_torque_rate = def->maxTorqueRate;
     s.trust_distance = def->trustDistance;
+    switch (def->hapticTiming) {
+      case PROX_TIMING_AUTO:
+        s.haptic_timing = runtime::HapticTiming::Auto;
+        break;
+      case PROX_TIMING_SPIN:
+        s.haptic_timing = runtime::HapticTiming::Spin;
+        break;
+      case PROX_TIMING_SLEEP:
+        s.haptic_timing = runtime::HapticTiming::Sleep;
+        break;
+      default:
+        fail(PROX_ERROR_INVALID_ARGUMENT, "def->hapticTiming is not a proxHapticTiming");
+    }
+    s.spin_margin = def->spinMargin;
+    s.realtime_priority[0] = def->hapticPriority;
+    s.realtime_priority[1] = def->localPriority;
+    s.lock_memory = def->lockMemory != 0;
     Status status;
     if (!w.start_threads(s, status)) {
       if (status.code() == StatusCode::InvalidArgument)
@@ -81,6 +105,15 @@ proxResult proxWorld_GetThreadStats(proxWorldId world, proxThread thread, proxTh
     stats->updateMax = s.update_max;
     stats->updates = s.updates;
     stats->overruns = s.overruns;
+    stats->periodP999 = s.period_p999;
+    const runtime::ThreadGrant g = t->grant(role);
+    stats->realtimePriority = g.realtime_priority;
+    stats->realtimeError = g.realtime_error;
+    if (role == runtime::Role::Haptic) {
+      stats->memoryLocked = t->memory_locked() ? 1 : 0;
+      stats->memoryLockError = t->memory_lock_error();
+      stats->timing = t->haptic_timing() == runtime::HapticTiming::Spin ? PROX_TIMING_SPIN : PROX_TIMING_SLEEP;
+    }
   });
 }
 
