@@ -9,6 +9,7 @@ import weakref
 
 import numpy as np
 
+from . import _header
 from ._core import (CAPACITY, c_dtype, check, enum_value, ffi, fill_c, from_c, integer, invalid, lib,
                     pose_from_c, pose_to_c, poses_array, real, snake, vec3)
 from ._types import (ForceSettings, IntersectionStats, MeshInfo, MeshStats, SafetyStats, SearchStats,
@@ -222,7 +223,8 @@ class World:
         """Starts the haptic, local tracking and global search threads.
         Settings are proxThreadsDef's fields in snake_case (haptic_rate=1000,
         local_rate, global_rate, haptic_core, ..., max_contacts, stale_after,
-        max_force_rate, max_torque_rate, trust_distance)."""
+        haptic_timing="spin", lock_memory=True, ...); the rest keep their
+        defaults."""
         d = ffi.new("proxThreadsDef*", lib.proxDefaultThreadsDef())
         _fill_settings(d, "proxThreadsDef", settings, "start_threads")
         check(lib.proxWorld_StartThreads(self._idp[0], d))
@@ -283,17 +285,26 @@ class World:
 
 
 def _fill_settings(d, struct_name, settings, what, skip=()):
-    """Sets a def's fields from keyword arguments named in snake_case."""
-    fields = {snake(name): (name, field.type.cname) for name, field in ffi.typeof(struct_name).fields
+    """Sets a def's fields from keyword arguments named in snake_case: numbers,
+    enums by their short names ("spin"), proxBool fields from bools."""
+    bools = _header.BOOL_FIELDS.get(struct_name, ())
+    fields = {snake(name): (name, field.type) for name, field in ffi.typeof(struct_name).fields
               if name not in ("internalValue", "reserved") and snake(name) not in skip}
     for key, value in settings.items():
         if key not in fields:
             raise invalid(f"{what}: unknown setting {key!r}; the settings are {', '.join(fields)}")
-        name, cname = fields[key]
-        if cname in ("double", "float"):
-            setattr(d, name, real(value, f"{what}: {key}"))
+        name, ctype = fields[key]
+        where = f"{what}: {key}"
+        if ctype.kind == "enum":
+            setattr(d, name, enum_value(ctype.cname, value, where))
+        elif name in bools:
+            if not isinstance(value, (bool, np.bool_)):
+                raise invalid(f"{where} must be True or False, not {value!r}")
+            setattr(d, name, bool(value))
+        elif ctype.cname in ("double", "float"):
+            setattr(d, name, real(value, where))
         else:
-            setattr(d, name, integer(value, f"{what}: {key}"))
+            setattr(d, name, integer(value, where))
 
 
 def _array(value, what, kinds, noun):

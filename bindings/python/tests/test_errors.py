@@ -264,6 +264,10 @@ def test_bad_thread_and_device_arguments(world):
         world.start_threads(haptic_rate=-5)
     with raises(proxima.InvalidArgument, "start_threads: haptic_core must be an integer"):
         world.start_threads(haptic_core=0.5)
+    with raises(proxima.InvalidArgument, "start_threads: haptic_timing must be one of 'auto', 'spin', 'sleep'"):
+        world.start_threads(haptic_timing="busy")
+    with raises(proxima.InvalidArgument, "start_threads: lock_memory must be True or False, not 1"):
+        world.start_threads(lock_memory=1)
     with raises(proxima.InvalidArgument, "poseCount must be >= 1"):
         world.create_scripted_device([], 0.1)
     with raises(proxima.InvalidArgument, "must be a \\(K, 7\\) array"):

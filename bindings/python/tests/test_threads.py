@@ -107,3 +107,17 @@ def test_stopping_twice_and_closing_a_running_world(bunny):
     assert w.closed
     with pytest.raises(proxima.InvalidHandle):
         w.stop_threads()
+
+
+def test_timing_settings_reach_the_haptic_loop(world, bunny):
+    world.create_body(bunny, "static")
+    world.create_body(bunny, "tool", pose=((0.14, 0, 0), (1, 0, 0, 0)))
+    for timing in ("sleep", "spin"):
+        world.start_threads(haptic_timing=timing, spin_margin=0.0002, haptic_priority=0, lock_memory=False)
+        try:
+            assert _wait_for(lambda: world.thread_stats("haptic").updates > 20)
+        finally:
+            world.stop_threads()
+        stats = world.thread_stats("haptic")
+        assert stats.timing == timing and stats.memory_locked is False and stats.realtime_priority == 0
+        assert stats.period_p50 <= stats.period_p999 <= stats.period_max
