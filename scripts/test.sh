@@ -57,7 +57,7 @@ rm -rf build/py-venv
 python3 -m venv build/py-venv
 PIP_CONSTRAINT="$(pwd)/bindings/python/ci-constraints.txt" CMAKE_BUILD_PARALLEL_LEVEL="$jobs" \
   build/py-venv/bin/pip install --quiet ./bindings/python -r bindings/python/tests/requirements.txt \
-  -C build-dir="$(pwd)/build/py-wheel"
+  --config-settings=build-dir="$(pwd)/build/py-wheel"
 echo "-- Python benchmarks smoke run (docs/python.md)"
 build/py-venv/bin/python bindings/python/bench/step_overhead.py "$(assets_dir)/bunny.obj" --iterations 20 >/dev/null
 build/py-venv/bin/python bindings/python/bench/gil.py "$(assets_dir)/bunny.obj" --seconds 0.2 >/dev/null
