@@ -46,16 +46,17 @@ class StreamDevice:
     def __init__(self, world, idp):
         self.world = world
         self._idp = idp
-        self._pose = ffi.new("proxPose*")
-        self._wrench = ffi.new("proxWrench*")
 
     def push_pose(self, position, quaternion, t=None):
         """Hands the device the tool's world pose at time `t` (get_time()'s
         clock; default now). From any one thread at a time; never waits. A
         sample no newer than the newest is dropped (counted in stats)."""
-        pose_to_c((position, quaternion), self._pose[0], "push_pose")
+        # A pose of its own per call: a second thread pushing at once must be
+        # refused by the library (PROX_ERROR_WRONG_THREAD), not overwrite this one.
+        pose = ffi.new("proxPose*")
+        pose_to_c((position, quaternion), pose[0], "push_pose")
         when = get_time() if t is None else real(t, "push_pose: t")
-        check(lib.proxStreamDevice_PushPose(self._idp[0], self._pose, when))
+        check(lib.proxStreamDevice_PushPose(self._idp[0], pose, when))
 
     def wrench(self):
         """(force (3,) N, torque (3,) N m, clipped): what the haptic loop last
