@@ -83,11 +83,43 @@ def run(mesh_path, device_kind, main_thread, seconds):
         return w.thread_stats("haptic"), samples
 
 
+def released_during_calls(mesh_path, seconds):
+    """A pure-Python counter's rate on a second thread while the main thread
+    runs brute-force steps (the C API on the bunny), against its rate alone:
+    near 1 (or the machine's share of a core) when the calls release the GIL."""
+    def count(sec):
+        n, end = 0, time.perf_counter() + sec
+        while time.perf_counter() < end:
+            n += 1
+        return n
+
+    alone = count(seconds)
+    with proxima.World(method="reference") as w:
+        m = w.load_mesh(mesh_path)
+        w.create_body(m, "static")
+        tool = w.create_body(m, "tool", pose=((0.1392, 0, 0), (1, 0, 0, 0)))
+        result = {}
+        counter = threading.Thread(target=lambda: result.setdefault("n", count(seconds)))
+        counter.start()
+        start, in_c, k = time.perf_counter(), 0.0, 0
+        while time.perf_counter() - start < seconds:
+            tool.pose = ((0.1392 + 1e-6 * (k & 1), 0, 0), (1, 0, 0, 0))
+            t = time.perf_counter()
+            w.step()
+            in_c += time.perf_counter() - t
+            k += 1
+        counter.join()
+    return result["n"] / alone, in_c / (time.perf_counter() - start)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("mesh", nargs="?", default=os.path.join(os.environ.get("PROXIMA_ASSETS", "."), "bunny.obj"))
     parser.add_argument("--seconds", type=float, default=2.0)
     args = parser.parse_args()
+    ratio, busy_share = released_during_calls(args.mesh, args.seconds)
+    print(f"a Python counter thread ran at {ratio:.0%} of its rate alone while the main thread spent "
+          f"{busy_share:.0%} of the time in step()")
     print(f"haptic loop at 1 kHz for {args.seconds:g} s; switch interval {sys.getswitchinterval() * 1e3:g} ms")
     print(f"{'device':9s} {'main thread':12s} {'achieved Hz':>11s} {'period p50':>11s} {'p99 ms':>8s} "
           f"{'max ms':>8s} {'overruns':>9s} {'max push gap ms':>16s}")
