@@ -20,7 +20,7 @@ configure() {  # configure DIR [cmake args...]
 
 echo "== core only (nothing optional: no tests, samples, benchmarks or glTF)"
 configure build/core -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_SAMPLES=OFF -DPROX_BUILD_BENCHMARKS=OFF \
-  -DPROX_WITH_GLTF=OFF
+  -DPROX_WITH_GLTF=OFF -DPROX_BUILD_CSHARP=OFF
 cmake --build build/core -j "$jobs"
 
 echo "== address + undefined-behaviour sanitizers"

@@ -340,6 +340,35 @@ TEST_F(Stream, BadIdsPosesAndTimesAreRefusedAndCounted) {
   EXPECT_EQ(length(w.force), 0.0);
 }
 
+// A device lives as long as its world: another world's tools cannot take it
+// (destroying its world would leave them calling freed memory).
+TEST_F(Stream, ADeviceHoldsOnlyItsOwnWorldsTools) {
+  create(PROX_STREAM_HOLD);
+  proxWorldId other{};
+  const proxWorldDef wd = proxDefaultWorldDef();
+  ASSERT_OK(proxCreateWorld(&wd, &other));
+  proxStreamDeviceDef sd = proxDefaultStreamDeviceDef();
+  proxStreamDeviceId foreign{};
+  ASSERT_OK(proxWorld_CreateStreamDevice(other, &sd, &foreign));
+  proxDeviceDef def{};
+  ASSERT_OK(proxStreamDevice_GetDeviceDef(foreign, &def));
+  EXPECT_FAILS(proxBody_SetDevice(tool, &def), PROX_ERROR_INVALID_ARGUMENT, "another world");
+  const proxPose poses[2] = {at(kFar), at(kNear)};
+  proxScriptedDeviceDef scd = proxDefaultScriptedDeviceDef();
+  scd.poses = poses;
+  scd.poseCount = 2;
+  proxScriptedDeviceId scripted{};
+  ASSERT_OK(proxWorld_CreateScriptedDevice(other, &scd, &scripted));
+  ASSERT_OK(proxScriptedDevice_GetDeviceDef(scripted, &def));
+  EXPECT_FAILS(proxBody_SetDevice(tool, &def), PROX_ERROR_INVALID_ARGUMENT, "another world");
+  ASSERT_OK(proxDestroyWorld(other));
+  // This world's own device still holds the tool, and runs.
+  ASSERT_OK(proxStreamDevice_GetDeviceDef(device, &def));
+  EXPECT_OK(proxBody_SetDevice(tool, &def));
+  ASSERT_OK(proxWorld_StartThreads(world, &threads));
+  EXPECT_OK(proxWorld_StopThreads(world));
+}
+
 TEST_F(Stream, ThreadRulesAndTheWorldsEnd) {
   create(PROX_STREAM_HOLD);
   const proxPose good = at(kFar);

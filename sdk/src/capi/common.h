@@ -72,6 +72,8 @@ runtime::World& world_of(proxWorldId id, const char* what = "world");
 // on other threads to finish with them (stream_device.cpp). Before the world
 // is destroyed, with its threads stopped.
 void release_stream_devices(proxWorldId world);
+// Whether a device def is a streamed device's (its callbacks are Proxima's).
+bool is_stream_device_def(const proxDeviceDef& def);
 
 inline runtime::Handle mesh_of(proxMeshId id, runtime::World*& world) {
   world = &world_of(id.world, "mesh's world");

@@ -83,6 +83,12 @@ proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def) {
     }
     need_def(*def, "proxDefaultDeviceDef");
     if (!def->readPose) fail(PROX_ERROR_INVALID_ARGUMENT, "def->readPose is NULL");
+    // A built-in device lives as long as its world: one from another world
+    // would be gone while this one still calls it.
+    if ((def->readPose == &ScriptedTrampoline::read || is_stream_device_def(*def)) &&
+        !w->owns_device(def->userData))
+      fail(PROX_ERROR_INVALID_ARGUMENT,
+           "def is a built-in device of another world (a device can hold only its own world's tools)");
     auto adapter = std::make_shared<DeviceAdapter>(*def);
     runtime::Device d;
     d.read_pose = &DeviceAdapter::read;

@@ -99,6 +99,8 @@ void check_sample(const proxPose& pose, double time, runtime::StreamSample& out)
 
 namespace prox::capi {
 
+bool is_stream_device_def(const proxDeviceDef& def) { return def.readPose == &StreamTrampoline::read; }
+
 void release_stream_devices(proxWorldId world) {
   const std::uint64_t key = world_key(world);
   std::lock_guard<std::mutex> lock(g_slots_mutex);

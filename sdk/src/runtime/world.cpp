@@ -107,6 +107,14 @@ std::uint32_t World::add_scripted_device(std::unique_ptr<ScriptedDevice> device)
   return static_cast<std::uint32_t>(scripted_devices_.size() - 1);
 }
 
+bool World::owns_device(const void* device) const {
+  for (const auto& d : scripted_devices_)
+    if (d.get() == device) return true;
+  for (const auto& d : stream_devices_)
+    if (d.get() == device) return true;
+  return false;
+}
+
 std::uint32_t World::add_stream_device(std::unique_ptr<StreamDevice> device) {
   stream_devices_.push_back(std::move(device));
   return static_cast<std::uint32_t>(stream_devices_.size() - 1);
