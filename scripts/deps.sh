@@ -17,6 +17,9 @@ need_packages() {
 CORE_PACKAGES=(g++ cmake ninja-build libglm-dev libgtest-dev
   libtinygltf-dev nlohmann-json3-dev)  # glTF loading (PROX_WITH_GLTF)
 
+# Installing and packaging the SDK (the tests labelled install, docs/install.md).
+INSTALL_PACKAGES=(pkg-config dpkg-dev file)
+
 # The scene benchmark's peers and plots (scripts/bench.sh): FCL to measure
 # against (never a dependency of the SDK) and a venv for matplotlib.
 BENCH_PACKAGES=(libbenchmark-dev libfcl-dev python3 python3-venv)

@@ -9,6 +9,11 @@ cd "$(dirname "$0")/.."
 . scripts/deps.sh
 need_packages "${CORE_PACKAGES[@]}" libbenchmark-dev python3 python3-venv
 
+# The install tests (in the release suite): consume.sh installs the .deb
+# packages for real only on CI's throwaway machines (docs/install.md).
+need_packages "${INSTALL_PACKAGES[@]}"
+[ -n "${CI:-}" ] && export PROX_DEB_SYSTEM_INSTALL=${PROX_DEB_SYSTEM_INSTALL:-1}
+
 jobs=$(nproc)
 configure() {  # configure DIR [cmake args...]
   local dir=$1
