@@ -456,9 +456,9 @@ typedef enum proxHapticTiming {
 } proxHapticTiming;
 
 typedef struct proxThreadsDef {
-  double hapticRate; /* Hz: the haptic loop (default 1000) */
-  double localRate;  /* Hz: local tracking (default 1000; 0: back to back) */
-  double globalRate; /* Hz: global search (default 0: back to back, idle while nothing moves) */
+  double hapticRate; /* Hz, in [1, 100000]: the haptic loop (default 1000) */
+  double localRate;  /* Hz, 0 or >= 1: local tracking (default 1000; 0: back to back) */
+  double globalRate; /* Hz, 0 or >= 1: global search (default 0: back to back, idle while nothing moves) */
   /* The core each thread is pinned to; -1: not pinned. The default, where
    * the process may use at least four cores: the haptic and local threads
    * on the last two, one each, the global search unpinned; else none. */

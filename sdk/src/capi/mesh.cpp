@@ -7,6 +7,8 @@
 #endif
 
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 
 using namespace prox;
 using namespace prox::capi;
@@ -23,6 +25,18 @@ proxMeshId add_mesh(proxWorldId world_id, runtime::World& world, const MeshInput
   const runtime::Handle h = world.create_mesh(input, status);
   if (!status && !source.empty()) fail(status_code(status), source + ": " + status.message());
   check(status);
+  // Checked on the built mesh's bounds (the mesh layer accepts any finite
+  // coordinate; the distance kernel does not).
+  const Aabb& box = world.mesh(h).bounds();
+  for (const double x : {box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z})
+    if (std::abs(x) > kMaxCoordinate) {
+      Status ignored;
+      world.destroy_mesh(h, ignored);
+      char value[32];
+      std::snprintf(value, sizeof value, "%g", x);
+      fail(PROX_ERROR_INVALID_MESH, (source.empty() ? "" : source + ": ") + "a vertex has a coordinate of " +
+                                        value + ", beyond the +-1e50 Proxima supports");
+    }
   return make_mesh_id(world_id, h);
 }
 

@@ -26,13 +26,13 @@ proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
     if (def->apiVersion != PROX_API_VERSION)
       fail(PROX_ERROR_VERSION_MISMATCH, "def comes from API version " + std::to_string(def->apiVersion) +
                                             ", the library is " + std::to_string(PROX_API_VERSION));
-    if (def->method != PROX_METHOD_PRECISE && def->method != PROX_METHOD_ORIGINAL &&
-        def->method != PROX_METHOD_REFERENCE)
+    const int32_t method = enum_value(def->method);
+    if (method != PROX_METHOD_PRECISE && method != PROX_METHOD_ORIGINAL && method != PROX_METHOD_REFERENCE)
       fail(PROX_ERROR_INVALID_ARGUMENT, "def->method is not a proxMethod");
     need_positive(def->cutoff, "def->cutoff");
     runtime::WorldSettings s;
-    s.method = def->method == PROX_METHOD_ORIGINAL    ? Method::Original
-               : def->method == PROX_METHOD_REFERENCE ? Method::Reference
+    s.method = method == PROX_METHOD_ORIGINAL    ? Method::Original
+               : method == PROX_METHOD_REFERENCE ? Method::Reference
                                                       : Method::Precise;
     s.cutoff = def->cutoff;
     s.force = to_force(def->force, def->cutoff);

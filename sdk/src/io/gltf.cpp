@@ -813,11 +813,11 @@ class Decoder {
   std::vector<LocalMesh> meshes_;
 };
 
-Status load(const std::string& path, const GltfLoadOptions& options, std::vector<GltfMesh>& out) {
-  std::vector<unsigned char> bytes;
-  Status status = read_file(path, bytes);
-  if (!status) return status;
-
+// `path` names the file in messages and gives its extension, stem and the
+// directory external buffers are read from.
+Status load(std::vector<unsigned char>& bytes, const std::string& path, const GltfLoadOptions& options,
+            std::vector<GltfMesh>& out) {
+  Status status;
   // Binary or text by content: a GLB starts with the magic "glTF".
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   const std::filesystem::path fs_path(path);
@@ -865,9 +865,18 @@ Status load(const std::string& path, const GltfLoadOptions& options, std::vector
 
 Status load_gltf(const std::string& path, const GltfLoadOptions& options, std::vector<GltfMesh>& out) {
   out.clear();
+  std::vector<unsigned char> bytes;
+  const Status status = read_file(path, bytes);
+  if (!status) return status;
+  return load_gltf_bytes(std::move(bytes), path, options, out);
+}
+
+Status load_gltf_bytes(std::vector<unsigned char> bytes, const std::string& path, const GltfLoadOptions& options,
+                       std::vector<GltfMesh>& out) {
+  out.clear();
   Status status;
   try {
-    status = load(path, options, out);
+    status = load(bytes, path, options, out);
   } catch (const std::bad_alloc&) {
     status = {StatusCode::ParseError, path + ": out of memory (sizes in the file are too large)"};
   } catch (const std::exception& e) {

@@ -50,5 +50,9 @@ struct GltfLoadOptions {
 // references or bytes, index values past the vertex count, non-finite
 // positions). `out` is empty after an error.
 Status load_gltf(const std::string& path, const GltfLoadOptions& options, std::vector<GltfMesh>& out);
+// The same, from the file's bytes already in memory; `path` is used in
+// messages, and its directory for external buffers.
+Status load_gltf_bytes(std::vector<unsigned char> bytes, const std::string& path, const GltfLoadOptions& options,
+                       std::vector<GltfMesh>& out);
 
 }  // namespace prox::io

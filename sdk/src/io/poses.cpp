@@ -1,5 +1,6 @@
 #include "io/poses.h"
 
+#include "common/quaternion.h"
 #include "io/file.h"
 
 #include <cmath>
@@ -31,9 +32,8 @@ Status parse_poses(const std::string& text, const std::string& name, std::vector
       return Status(StatusCode::ParseError, where + ": expected 7 numbers: tx ty tz qw qx qy qz");
     for (double x : v)
       if (!std::isfinite(x)) return Status(StatusCode::ParseError, where + ": a number is not finite");
-    const double n = std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5] + v[6] * v[6]);
-    if (!(n > 1e-12)) return Status(StatusCode::ParseError, where + ": the quaternion is zero");
-    out.push_back({{v[0], v[1], v[2]}, {v[3] / n, v[4] / n, v[5] / n, v[6] / n}});
+    if (!normalize_quaternion(v + 3)) return Status(StatusCode::ParseError, where + ": the quaternion is zero");
+    out.push_back({{v[0], v[1], v[2]}, {v[3], v[4], v[5], v[6]}});
   }
   if (out.empty()) return Status(StatusCode::ParseError, name + ": no pose in the file");
   return Status();
