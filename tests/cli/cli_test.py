@@ -56,6 +56,29 @@ class CliTest(unittest.TestCase):
         self.assertEqual(r.returncode, 1)
         self.assertIn("KHR_draco_mesh_compression", r.stderr)
 
+    def test_info_reports_skipped_attributes(self):
+        # One triangle whose NORMAL accessor (30 VEC3 floats, 360 bytes) runs
+        # past its 36-byte buffer view: loaded, with a warning naming it.
+        gltf = write(self.dir.name, "bad-normal.gltf", json.dumps({
+            "asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 2}, "indices": 1}]}],
+            "buffers": [{"byteLength": 42, "uri": "data:application/octet-stream;base64,"
+                         "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIA"}],
+            "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                          {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"},
+                          {"bufferView": 0, "componentType": 5126, "count": 30, "type": "VEC3"}]}))
+        r = run("info", gltf)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertRegex(r.stdout, r"triangles\s+1 ")
+        warnings = [line for line in r.stdout.splitlines() if line.strip().startswith("warning")]
+        self.assertEqual(len(warnings), 1, r.stdout)
+        self.assertIn("mesh 0 primitive 0: NORMAL accessor 2", warnings[0])
+        self.assertIn("run past the end of the bufferView (36 bytes)", warnings[0])
+        # A clean file has no warning line.
+        r = run("info", self.square)
+        self.assertNotIn("warning", r.stdout)
+
     def test_lmd_between_single_triangles(self):
         # B is A turned over (180 degrees about x: normal -z, facing A),
         # shifted by (0.1, 0.1) and lifted 1 mm: two parallel faces that

@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <cstdlib>
 
-#define PROX_FUZZ_CHECK(condition, ...)                                                          \
-  do {                                                                                           \
-    if (!(condition)) {                                                                          \
-      std::fprintf(stderr, "%s:%d: check failed: %s: ", __FILE__, __LINE__, #condition);         \
-      std::fprintf(stderr, __VA_ARGS__);                                                         \
-      std::fprintf(stderr, "\n");                                                                \
-      std::abort();                                                                              \
-    }                                                                                            \
+#define PROX_FUZZ_CHECK(condition, ...)                                                  \
+  do {                                                                                   \
+    if (!(condition)) {                                                                  \
+      std::fprintf(stderr, "%s:%d: check failed: %s: ", __FILE__, __LINE__, #condition); \
+      std::fprintf(stderr, __VA_ARGS__);                                                 \
+      std::fprintf(stderr, "\n");                                                        \
+      std::abort();                                                                      \
+    }                                                                                    \
   } while (0)

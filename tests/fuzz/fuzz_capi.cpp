@@ -22,7 +22,8 @@ using prox::fuzz::set_enum;
 void named(proxResult r, const char* call) {
   PROX_FUZZ_CHECK(r <= 0, "%s returned %d", call, r);
   if (r != PROX_SUCCESS)
-    PROX_FUZZ_CHECK(proxGetLastError()[0] != '\0', "%s failed (%s) without a message", call, proxResultString(r));
+    PROX_FUZZ_CHECK(proxGetLastError()[0] != '\0', "%s failed (%s) without a message", call,
+                    proxResultString(r));
 }
 #define CALL(expr) named((expr), #expr)
 
@@ -141,7 +142,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         int32_t count = -1;
         const int32_t capacity = in.u8() % 4 == 0 ? in.i32() : in.u8() % 9;
         const bool fits = capacity >= 0 && capacity <= 8;
-        const proxResult r = proxBody_GetContacts(pick(in, bodies), fits ? contacts : nullptr, capacity, &count);
+        const proxResult r =
+            proxBody_GetContacts(pick(in, bodies), fits ? contacts : nullptr, capacity, &count);
         named(r, "proxBody_GetContacts");
         if (r == PROX_SUCCESS || r == PROX_ERROR_CAPACITY)
           for (int32_t i = 0; i < (count < capacity ? count : capacity); ++i)
@@ -244,6 +246,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   // Destroying a world stops its threads and frees everything in it.
   for (const proxWorldId world : worlds)
-    if (proxWorld_IsValid(world)) PROX_FUZZ_CHECK(proxDestroyWorld(world) == PROX_SUCCESS, "%s", proxGetLastError());
+    if (proxWorld_IsValid(world))
+      PROX_FUZZ_CHECK(proxDestroyWorld(world) == PROX_SUCCESS, "%s", proxGetLastError());
   return 0;
 }

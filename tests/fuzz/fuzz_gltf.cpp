@@ -14,11 +14,12 @@ using namespace prox;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const bool binary = size >= 4 && data[0] == 'g' && data[1] == 'l' && data[2] == 'T' && data[3] == 'F';
-  const std::string path = binary ? "/nonexistent-proxima-fuzz/fuzz.glb" : "/nonexistent-proxima-fuzz/fuzz.gltf";
+  const std::string path =
+      binary ? "/nonexistent-proxima-fuzz/fuzz.glb" : "/nonexistent-proxima-fuzz/fuzz.gltf";
   for (const io::GltfSceneMode mode : {io::GltfSceneMode::Merged, io::GltfSceneMode::PerNode}) {
     std::vector<io::GltfMesh> meshes;
-    const Status status =
-        io::load_gltf_bytes(std::vector<unsigned char>(data, data + size), path, io::GltfLoadOptions{mode}, meshes);
+    const Status status = io::load_gltf_bytes(std::vector<unsigned char>(data, data + size), path,
+                                              io::GltfLoadOptions{mode}, meshes);
     if (!status) {
       PROX_FUZZ_CHECK(status.message().find("fuzz.gl") != std::string::npos, "error without the file: %s",
                       status.message().c_str());
@@ -30,7 +31,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       PROX_FUZZ_CHECK(mesh.positions.size() % 3 == 0 && mesh.indices.size() % 3 == 0, "ragged arrays");
       for (const double x : mesh.positions) PROX_FUZZ_CHECK(std::isfinite(x), "non-finite coordinate %g", x);
       for (const std::uint32_t i : mesh.indices)
-        PROX_FUZZ_CHECK(i < mesh.positions.size() / 3, "index %u past %zu vertices", i, mesh.positions.size() / 3);
+        PROX_FUZZ_CHECK(i < mesh.positions.size() / 3, "index %u past %zu vertices", i,
+                        mesh.positions.size() / 3);
     }
   }
   return 0;

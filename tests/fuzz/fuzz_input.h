@@ -48,7 +48,8 @@ class Input {
       case 0:
         return std::numeric_limits<double>::quiet_NaN();
       case 1:
-        return (kind & 16) ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+        return (kind & 16) ? -std::numeric_limits<double>::infinity()
+                           : std::numeric_limits<double>::infinity();
       case 2:
         return (kind & 16) ? -0.0 : 0.0;
       case 3:

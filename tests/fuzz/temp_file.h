@@ -2,13 +2,13 @@
 // meshes and paths from files only). One per process, removed at exit.
 #pragma once
 
+#include <unistd.h>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <system_error>
-#include <unistd.h>
 
 namespace prox::fuzz {
 

@@ -205,6 +205,16 @@ typedef struct proxMeshInfo {
 /* Game thread. */
 PROX_API proxResult proxMesh_GetInfo(proxMeshId mesh, proxMeshInfo* info);
 
+/* What loading the mesh's file skipped without failing: attributes Proxima
+ * does not read (NORMAL, TEXCOORD_0, ...) that are invalid, say a NORMAL
+ * accessor running past its buffer view. One warning per line, each ending
+ * in '\n', naming the file, mesh, primitive and accessor; "" for a mesh
+ * without warnings (every mesh made by proxWorld_CreateMesh). Copies at most
+ * capacity - 1 bytes and a terminating NUL into `buffer` (may be NULL when
+ * capacity is 0) and sets *length to the whole text's length without the
+ * NUL; PROX_ERROR_CAPACITY when it did not all fit. Game thread. */
+PROX_API proxResult proxMesh_GetWarnings(proxMeshId mesh, char* buffer, int32_t capacity, int32_t* length);
+
 /* ---- bodies ---------------------------------------------------------------- */
 
 typedef enum proxBodyType {

@@ -33,7 +33,7 @@ proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
     runtime::WorldSettings s;
     s.method = method == PROX_METHOD_ORIGINAL    ? Method::Original
                : method == PROX_METHOD_REFERENCE ? Method::Reference
-                                                      : Method::Precise;
+                                                 : Method::Precise;
     s.cutoff = def->cutoff;
     s.force = to_force(def->force, def->cutoff);
     auto w = std::make_unique<runtime::World>(s);
@@ -55,6 +55,7 @@ proxResult proxDestroyWorld(proxWorldId world) {
     {
       std::lock_guard<std::mutex> lock(g_worlds_mutex);
       doomed = std::move(g_worlds[world.index1 - 1].world);
+      g_worlds[world.index1 - 1].mesh_warnings.clear();
     }
     // No device callback runs once the threads stop; then no other thread
     // may still hold one of the world's streamed devices.

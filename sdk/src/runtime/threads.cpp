@@ -127,7 +127,8 @@ bool Threads::start(Status& status) {
   if (!(finite(s.local_rate) && (s.local_rate == 0.0 || s.local_rate >= 1.0)))
     return bad("local rate must be 0 (back to back) or >= 1 Hz (it is " + std::to_string(s.local_rate) + ")");
   if (!(finite(s.global_rate) && (s.global_rate == 0.0 || s.global_rate >= 1.0)))
-    return bad("global rate must be 0 (back to back) or >= 1 Hz (it is " + std::to_string(s.global_rate) + ")");
+    return bad("global rate must be 0 (back to back) or >= 1 Hz (it is " + std::to_string(s.global_rate) +
+               ")");
   if (!(finite(s.stale_after) && s.stale_after > 0.0))
     return bad("staleness limit must be > 0 s (it is " + std::to_string(s.stale_after) + ")");
   if (!(finite(s.max_force_rate) && s.max_force_rate > 0.0))
