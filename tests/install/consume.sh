@@ -82,16 +82,22 @@ consume_prefix() {  # consume_prefix PREFIX_PATH LIBDIR PKG_CONFIG_PATH WHAT
 case $mode in
   tree)
     cmake --install "$build" --prefix "$work/prefix" >"$work/install.log" || fail "cmake --install"
-    for f in lib/libproxima.so.0.1.0 lib/libproxima.so.0 lib/libproxima.so include/proxima/proxima.h \
-      include/proxima/version.h lib/cmake/proxima/proximaConfig.cmake lib/cmake/proxima/proximaConfigVersion.cmake \
-      lib/cmake/proxima/proximaTargets.cmake lib/pkgconfig/proxima.pc; do
+    # lib, or lib/<multiarch> for a /usr prefix (GNUInstallDirs).
+    library=$(find "$work/prefix" -name libproxima.so.0.1.0 | head -1)
+    [ -n "$library" ] || fail "cmake --install did not install libproxima.so.0.1.0"
+    lib=${library#"$work/prefix/"}
+    lib=${lib%/libproxima.so.0.1.0}
+    for f in $lib/libproxima.so.0 $lib/libproxima.so include/proxima/proxima.h include/proxima/version.h \
+      $lib/cmake/proxima/proximaConfig.cmake $lib/cmake/proxima/proximaConfigVersion.cmake \
+      $lib/cmake/proxima/proximaTargets.cmake $lib/pkgconfig/proxima.pc; do
       [ -e "$work/prefix/$f" ] || fail "cmake --install did not install $f"
     done
-    [ "$(readlink "$work/prefix/lib/libproxima.so")" = libproxima.so.0 ] || fail "libproxima.so does not link to libproxima.so.0"
-    soname=$(readelf -d "$work/prefix/lib/libproxima.so.0.1.0" | sed -n 's/.*SONAME.*\[\(.*\)\]/\1/p')
+    [ "$(readlink "$work/prefix/$lib/libproxima.so")" = libproxima.so.0 ] ||
+      fail "libproxima.so does not link to libproxima.so.0"
+    soname=$(readelf -d "$library" | sed -n 's/.*SONAME.*\[\(.*\)\]/\1/p')
     [ "$soname" = libproxima.so.0 ] || fail "SONAME is '$soname', not libproxima.so.0"
-    echo "ok: install tree: libproxima.so.0.1.0 (SONAME $soname), headers, CMake package, pkg-config file"
-    consume_prefix "$work/prefix" "$work/prefix/lib" "$work/prefix/lib/pkgconfig" "install tree"
+    echo "ok: install tree: $lib/libproxima.so.0.1.0 (SONAME $soname), headers, CMake package, pkg-config file"
+    consume_prefix "$work/prefix" "$work/prefix/$lib" "$work/prefix/$lib/pkgconfig" "install tree"
     ;;
   deb)
     (cd "$work" && cpack -G DEB --config "$build/CPackConfig.cmake" >"$work/cpack.log" 2>&1) ||
@@ -104,10 +110,11 @@ case $mode in
     dpkg-deb -f "$dev" Depends | grep -q "libproxima0 (= 0.1.0)" || fail "libproxima-dev does not depend on libproxima0 (= 0.1.0)"
     # The runtime package holds the library and its SONAME link only.
     runtime_files=$(dpkg-deb -c "$runtime" | awk '{print $6}' | grep -v '/$' | sort | tr '\n' ' ')
-    [ "$runtime_files" = "./usr/lib/libproxima.so.0 ./usr/lib/libproxima.so.0.1.0 " ] ||
+    lib=$(dpkg-deb -c "$runtime" | awk '{print $6}' | sed -n 's|^\./usr/\(.*\)/libproxima\.so\.0\.1\.0$|\1|p')
+    [ -n "$lib" ] && [ "$runtime_files" = "./usr/$lib/libproxima.so.0 ./usr/$lib/libproxima.so.0.1.0 " ] ||
       fail "libproxima0 holds: $runtime_files"
-    for f in ./usr/lib/libproxima.so ./usr/include/proxima/proxima.h ./usr/lib/cmake/proxima/proximaConfig.cmake \
-      ./usr/lib/pkgconfig/proxima.pc; do
+    for f in ./usr/$lib/libproxima.so ./usr/include/proxima/proxima.h ./usr/$lib/cmake/proxima/proximaConfig.cmake \
+      ./usr/$lib/pkgconfig/proxima.pc; do
       dpkg-deb -c "$dev" | awk '{print $6}' | grep -qx "$f" || fail "libproxima-dev lacks $f"
     done
     echo "ok: $(basename "$runtime") and $(basename "$dev"): names, dependencies, contents"
@@ -117,11 +124,11 @@ case $mode in
       trap '$sudo apt-get purge -y -qq libproxima0 libproxima-dev >/dev/null 2>&1 || true' EXIT
       DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "$runtime" "$dev" >"$work/apt.log" 2>&1 ||
         fail "apt-get install $runtime $dev: $(cat "$work/apt.log")"
-      consume_prefix "" /usr/lib "" "installed .deb"
+      consume_prefix "" "/usr/$lib" "" "installed .deb"
     else
       dpkg -x "$runtime" "$work/root"
       dpkg -x "$dev" "$work/root"
-      consume_prefix "$work/root/usr" "$work/root/usr/lib" "$work/root/usr/lib/pkgconfig" ".deb (dpkg -x)"
+      consume_prefix "$work/root/usr" "$work/root/usr/$lib" "$work/root/usr/$lib/pkgconfig" ".deb (dpkg -x)"
     fi
     ;;
   subdirectory | fetchcontent)
