@@ -21,6 +21,12 @@ CORE_PACKAGES=(g++ cmake ninja-build libglm-dev libgtest-dev
 # runtime, and NUnit 2.6 for their suite.
 CSHARP_PACKAGES=(mono-mcs mono-devel mono-runtime nunit-console libnunit-cil-dev)
 
+# Installing and packaging the SDK (the tests labelled install, docs/install.md).
+INSTALL_PACKAGES=(pkg-config dpkg-dev file)
+
+# The fuzz targets (tests/fuzz): clang with libFuzzer and the sanitizer runtimes.
+FUZZ_PACKAGES=(clang libclang-rt-14-dev libfuzzer-14-dev)
+
 # The scene benchmark's peers and plots (scripts/bench.sh): FCL to measure
 # against (never a dependency of the SDK) and a venv for matplotlib.
 BENCH_PACKAGES=(libbenchmark-dev libfcl-dev python3 python3-venv)

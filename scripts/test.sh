@@ -11,6 +11,11 @@ need_packages "${CORE_PACKAGES[@]}" libbenchmark-dev python3 python3-venv
 # The C# bindings: the release ctest runs their NUnit suite (label csharp).
 need_packages "${CSHARP_PACKAGES[@]}"
 
+# The install tests (in the release suite): consume.sh installs the .deb
+# packages for real only on CI's throwaway machines (docs/install.md).
+need_packages "${INSTALL_PACKAGES[@]}"
+[ -n "${CI:-}" ] && export PROX_DEB_SYSTEM_INSTALL=${PROX_DEB_SYSTEM_INSTALL:-1}
+
 jobs=$(nproc)
 configure() {  # configure DIR [cmake args...]
   local dir=$1
@@ -33,6 +38,16 @@ configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=thread -D
 cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests \
   proxima_capi_stream_tests proxima_capi_timing_tests
 ctest --test-dir build/tsan --output-on-failure -L threads
+
+echo "== fuzzers (libFuzzer, ASan + UBSan): each target 20 s on corpora from the shared assets (docs/robustness.md)"
+need_packages "${FUZZ_PACKAGES[@]}"
+# clang warns where GCC does not (INFINITY, a float, promoted in the kernel):
+# the fuzz build does not add -Werror; the GCC builds keep it.
+CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_BUILD_FUZZERS=ON \
+  -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_SAMPLES=OFF -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" >/dev/null
+cmake --build build/fuzz -j "$jobs" --target proxima_fuzz_obj proxima_fuzz_poses proxima_fuzz_gltf \
+  proxima_fuzz_gltf_capi proxima_fuzz_create_mesh proxima_fuzz_capi
+tests/fuzz/run.sh build/fuzz "$(assets_dir)" "${PROX_FUZZ_SECONDS:-20}"
 
 echo "== release"
 configure build/release -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_BENCHMARKS=ON

@@ -50,6 +50,12 @@ inline double parse_number(const std::string& text, const char* what) {
   return v;
 }
 
+inline double parse_positive(const std::string& text, const char* what) {
+  const double v = parse_number(text, what);
+  if (!(v > 0.0)) fail(std::string(what) + ": '" + text + "' must be > 0");
+  return v;
+}
+
 // small vector helpers on the C API's types
 
 inline proxVec3 sub(const proxVec3& a, const proxVec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
@@ -99,6 +105,16 @@ struct Settings {
 inline Settings preset(proxForcePreset p) {
   Settings s;
   check(proxGetForcePreset(p, &s.force, &s.cutoff));
+  return s;
+}
+
+// The settings at another cutoff: the safety distance and decay length keep
+// their ratios to the cutoff (the maximum force and torque stay).
+inline Settings scaled_to(Settings s, double cutoff) {
+  const double k = cutoff / s.cutoff;
+  s.cutoff = cutoff;
+  s.force.safetyDistance *= k;
+  s.force.decayLength *= k;
   return s;
 }
 

@@ -27,6 +27,18 @@ int info(Args& args) {
   std::printf("  SNCH             %u nodes, depth %u, %u unbounded leaf cones, built in %.1f ms, %.1f MiB\n",
               t.hierarchyNodes, t.hierarchyDepth, t.unboundedLeafCones, t.hierarchySeconds * 1e3,
               static_cast<double>(t.hierarchyBytes) / (1 << 20));
+  // What loading skipped without failing (invalid attributes Proxima does
+  // not read): one line each; the mesh is loaded all the same.
+  int32_t length = 0;
+  const proxResult r = proxMesh_GetWarnings(scene.mesh_a(), nullptr, 0, &length);
+  if (r != PROX_SUCCESS && r != PROX_ERROR_CAPACITY) check(r);
+  if (length > 0) {
+    std::string text(static_cast<std::size_t>(length) + 1, '\0');
+    check(proxMesh_GetWarnings(scene.mesh_a(), text.data(), length + 1, &length));
+    text.resize(static_cast<std::size_t>(length));
+    for (std::size_t begin = 0, end; (end = text.find('\n', begin)) != std::string::npos; begin = end + 1)
+      std::printf("  warning          %s\n", text.substr(begin, end - begin).c_str());
+  }
   return 0;
 }
 

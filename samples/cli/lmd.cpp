@@ -6,10 +6,9 @@ namespace proxcli {
 int lmd(Args& args) {
   const std::string path_a = args.next("mesh A"), path_b = args.next("mesh B");
   proxPose pose_a = identity(), pose_b = identity();
-  double cutoff = 0.005;
+  double cutoff = 0.0;  // 0: the preset's own
   proxMethod method = PROX_METHOD_PRECISE;
   Settings settings = preset(PROX_FORCE_PRESET_HARD);
-  std::string force_name = "hard";
   std::string json_path;
   while (!args.empty()) {
     const std::string opt = args.next("option");
@@ -18,26 +17,22 @@ int lmd(Args& args) {
     else if (opt == "--pose-b")
       pose_b = args.pose("--pose-b");
     else if (opt == "--cutoff")
-      cutoff = parse_number(args.next("--cutoff value"), "--cutoff");
+      cutoff = parse_positive(args.next("--cutoff value"), "--cutoff");
     else if (opt == "--method")
       method = parse_method(args.next("--method value"));
     else if (opt == "--force")
-      settings = parse_force(force_name = args.next("--force value"));
+      settings = parse_force(args.next("--force value"));
     else if (opt == "--json")
       json_path = args.next("--json file");
     else
       fail("lmd: unknown option '" + opt + "'");
   }
-  // The force falls from its maximum at the safety distance to zero at the
-  // cutoff, so the cutoff must lie beyond the safety distance.
-  if (!(cutoff > settings.force.safetyDistance)) {
-    char text[160];
-    std::snprintf(text, sizeof text, "--cutoff must be larger than the safety distance of --force %s (%g)",
-                  force_name.c_str(), settings.force.safetyDistance);
-    fail(text);
-  }
+  // A preset is a shape relative to its cutoff: at another cutoff its
+  // safety distance and decay length scale with it, as the benchmark's CAD
+  // scenes scale them, so any positive cutoff works at any scale.
+  if (cutoff > 0.0) settings = scaled_to(settings, cutoff);
+  cutoff = settings.cutoff;
   settings.method = method;
-  settings.cutoff = cutoff;
   const Scene scene(settings, path_a, path_b, pose_a, pose_b);
   check(proxWorld_Step(scene.world()));
   const std::vector<proxContact> contacts = scene.contacts();

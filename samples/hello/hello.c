@@ -10,6 +10,11 @@
 
 #include <stdio.h>
 
+/* The build in this repository points it at the shared assets. */
+#ifndef PROX_HELLO_DEFAULT_MESH
+#define PROX_HELLO_DEFAULT_MESH "bunny.obj"
+#endif
+
 /* Every call returns a proxResult; on failure proxGetLastError() says what
  * was wrong, naming the argument. */
 static int ok(proxResult r, const char* what) {

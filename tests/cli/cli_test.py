@@ -56,6 +56,29 @@ class CliTest(unittest.TestCase):
         self.assertEqual(r.returncode, 1)
         self.assertIn("KHR_draco_mesh_compression", r.stderr)
 
+    def test_info_reports_skipped_attributes(self):
+        # One triangle whose NORMAL accessor (30 VEC3 floats, 360 bytes) runs
+        # past its 36-byte buffer view: loaded, with a warning naming it.
+        gltf = write(self.dir.name, "bad-normal.gltf", json.dumps({
+            "asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 2}, "indices": 1}]}],
+            "buffers": [{"byteLength": 42, "uri": "data:application/octet-stream;base64,"
+                         "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIA"}],
+            "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                          {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"},
+                          {"bufferView": 0, "componentType": 5126, "count": 30, "type": "VEC3"}]}))
+        r = run("info", gltf)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertRegex(r.stdout, r"triangles\s+1 ")
+        warnings = [line for line in r.stdout.splitlines() if line.strip().startswith("warning")]
+        self.assertEqual(len(warnings), 1, r.stdout)
+        self.assertIn("mesh 0 primitive 0: NORMAL accessor 2", warnings[0])
+        self.assertIn("run past the end of the bufferView (36 bytes)", warnings[0])
+        # A clean file has no warning line.
+        r = run("info", self.square)
+        self.assertNotIn("warning", r.stdout)
+
     def test_lmd_between_single_triangles(self):
         # B is A turned over (180 degrees about x: normal -z, facing A),
         # shifted by (0.1, 0.1) and lifted 1 mm: two parallel faces that
@@ -230,6 +253,40 @@ class CliTest(unittest.TestCase):
         with open(json_path) as f:
             self.assertEqual(json.load(f)["haptic_timing"], "sleep")
 
+    def test_lmd_at_micro_scale_scales_the_force_preset(self):
+        # Triangles 2e-6 across, B turned over 1e-5 above A: the cutoff 2e-5
+        # is far inside the presets' own safety distances (0.3 mm, 2 mm), so
+        # the presets scale to it. Hard at cutoff 2e-5 (k = 2e-5 / 5e-3):
+        # safety 1.2e-6, decay 1.2e-6; the force at 1e-5 is
+        # 3 N * (exp(-(1e-5 - 1.2e-6) / 1.2e-6) - exp(-(2e-5 - 1.2e-6) / 1.2e-6))
+        # / (1 - exp(-(2e-5 - 1.2e-6) / 1.2e-6)), along +z. Soft (linear,
+        # safety 2 mm of 10 mm, so 4e-6 of 2e-5): 3 N * (2e-5 - 1e-5) / (2e-5 - 4e-6).
+        tiny = write(self.dir.name, "tiny.obj", "v 0 0 0\nv 2e-6 0 0\nv 0 2e-6 0\nf 1 2 3\n")
+        pose_b = ("--pose-b", "0", "0", "1e-5", "0", "1", "0", "0")
+        e = math.exp
+        expected = {
+            "hard": 3.0 * (e(-(1e-5 - 1.2e-6) / 1.2e-6) - e(-(2e-5 - 1.2e-6) / 1.2e-6))
+            / (1 - e(-(2e-5 - 1.2e-6) / 1.2e-6)),
+            "soft": 3.0 * (2e-5 - 1e-5) / (2e-5 - 4e-6),
+        }
+        for force, fz in expected.items():
+            with self.subTest(force=force):
+                json_path = os.path.join(self.dir.name, force + ".json")
+                r = run("lmd", tiny, tiny, *pose_b, "--cutoff", "2e-5", "--force", force, "--json", json_path)
+                self.assertEqual(r.returncode, 0, r.stderr)
+                with open(json_path) as f:
+                    out = json.load(f)
+                self.assertEqual(out["cutoff"], 2e-5)
+                self.assertEqual(len(out["lmds"]), 1)
+                self.assertAlmostEqual(out["lmds"][0]["distance"], 1e-5, delta=1e-17)
+                self.assertAlmostEqual(out["force"][2], fz, delta=1e-9 * fz)
+        # Any positive cutoff: far below and far above the presets' own.
+        for cutoff in ("1e-12", "1e3"):
+            with self.subTest(cutoff=cutoff):
+                r = run("lmd", tiny, tiny, *pose_b, "--cutoff", cutoff)
+                self.assertEqual(r.returncode, 0, r.stderr)
+                self.assertIn("within " + ("1e-12: 0" if cutoff == "1e-12" else "1000: 1"), r.stdout)
+
     def test_errors_are_clear_and_exit_non_zero(self):
         cases = [
             (("info", os.path.join(self.dir.name, "missing.obj")), "missing.obj"),
@@ -241,9 +298,7 @@ class CliTest(unittest.TestCase):
             (("lmd", self.tri, self.tri, "--pose-b", "0", "0", "inf", "1", "0", "0", "0"), "not finite"),
             (("lmd", self.tri, self.tri, "--pose-a", "1", "2"), "missing"),
             (("lmd", self.tri, self.tri, "--cutoff", "-1"), "--cutoff"),
-            # The force falls from its maximum at the safety distance (0.3 mm
-            # for hard) to zero at the cutoff: a cutoff inside it is refused.
-            (("lmd", self.tri, self.tri, "--cutoff", "0.0002"), "safety distance"),
+            (("lmd", self.tri, self.tri, "--cutoff", "0"), "must be > 0"),
             (("lmd", self.tri, self.tri, "--method", "magic"), "--method"),
             (("lmd", self.tri), "missing mesh B"),
             (("path", "--steps", "1"), "--steps"),

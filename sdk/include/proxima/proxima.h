@@ -205,6 +205,16 @@ typedef struct proxMeshInfo {
 /* Game thread. */
 PROX_API proxResult proxMesh_GetInfo(proxMeshId mesh, proxMeshInfo* info);
 
+/* What loading the mesh's file skipped without failing: attributes Proxima
+ * does not read (NORMAL, TEXCOORD_0, ...) that are invalid, say a NORMAL
+ * accessor running past its buffer view. One warning per line, each ending
+ * in '\n', naming the file, mesh, primitive and accessor; "" for a mesh
+ * without warnings (every mesh made by proxWorld_CreateMesh). Copies at most
+ * capacity - 1 bytes and a terminating NUL into `buffer` (may be NULL when
+ * capacity is 0) and sets *length to the whole text's length without the
+ * NUL; PROX_ERROR_CAPACITY when it did not all fit. Game thread. */
+PROX_API proxResult proxMesh_GetWarnings(proxMeshId mesh, char* buffer, int32_t capacity, int32_t* length);
+
 /* ---- bodies ---------------------------------------------------------------- */
 
 typedef enum proxBodyType {
@@ -460,9 +470,9 @@ typedef enum proxHapticTiming {
 } proxHapticTiming;
 
 typedef struct proxThreadsDef {
-  double hapticRate; /* Hz: the haptic loop (default 1000) */
-  double localRate;  /* Hz: local tracking (default 1000; 0: back to back) */
-  double globalRate; /* Hz: global search (default 0: back to back, idle while nothing moves) */
+  double hapticRate; /* Hz, in [1, 100000]: the haptic loop (default 1000) */
+  double localRate;  /* Hz, 0 or >= 1: local tracking (default 1000; 0: back to back) */
+  double globalRate; /* Hz, 0 or >= 1: global search (default 0: back to back, idle while nothing moves) */
   /* The core each thread is pinned to; -1: not pinned. The default, where
    * the process may use at least four cores: the haptic and local threads
    * on the last two, one each, the global search unpinned; else none. */

@@ -30,7 +30,7 @@ proxResult proxWorld_CreateBody(proxWorldId world, const proxBodyDef* def, proxB
     const runtime::Handle mesh = mesh_of(def->mesh, mesh_world);
     if (mesh_world != &w) fail(PROX_ERROR_INVALID_HANDLE, "def->mesh belongs to another world");
     runtime::BodyType type;
-    switch (def->type) {
+    switch (enum_value(def->type)) {
       case PROX_BODY_STATIC:
         type = runtime::BodyType::Static;
         break;

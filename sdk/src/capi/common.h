@@ -6,11 +6,15 @@
 
 #include <proxima/proxima.h>
 
+#include "common/quaternion.h"
 #include "runtime/world.h"
 
 #include <glm/gtc/quaternion.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <new>
@@ -60,6 +64,10 @@ struct WorldEntry {
   uint32_t generation = 0;
   std::unique_ptr<runtime::World> world;
   std::thread::id owner;
+  // proxMesh_GetWarnings: what loading each mesh's file skipped, by mesh
+  // handle (index << 32 | generation); meshes without warnings are absent.
+  // Under g_worlds_mutex, like the registry.
+  std::map<uint64_t, std::string> mesh_warnings;
 };
 
 extern std::mutex g_worlds_mutex;  // guards the registry's shape, not the worlds
@@ -117,6 +125,24 @@ inline void need(const T* p, const char* name) {
   if (!p) fail(PROX_ERROR_INVALID_ARGUMENT, std::string(name) + " is NULL");
 }
 
+// The largest coordinate magnitude a mesh vertex or a pose translation may
+// have at the C API. The mesh layer builds normals at any scale, but
+// distances and the exact predicates multiply several coordinate differences
+// together, and past about 1e77 those products overflow to infinity. 1e50
+// leaves room for poses on top and is far beyond any real scene.
+constexpr double kMaxCoordinate = 1e50;
+
+// An enum field or argument as the int32 the caller stored. A C caller or a
+// binding may store any value; reading one outside the C++ enum's range
+// through the enum type is undefined behaviour, so validation reads the bits.
+template <typename E>
+inline int32_t enum_value(const E& e) {
+  static_assert(sizeof(E) == sizeof(int32_t), "public enums are 32 bits");
+  int32_t v;
+  std::memcpy(&v, &e, sizeof v);
+  return v;
+}
+
 inline void need_finite(double v, const std::string& name) {
   if (!std::isfinite(v))
     fail(PROX_ERROR_INVALID_ARGUMENT, name + " is not finite (" + std::to_string(v) + ")");
@@ -138,11 +164,17 @@ inline proxVec3 to_c(const Vec3& v) { return {v.x, v.y, v.z}; }
 
 inline Pose to_pose(const proxPose& p, const std::string& name) {
   const Vec3 t = to_vec(p.position, name + ".position");
-  const double q[4] = {p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z};
+  for (const double x : {t.x, t.y, t.z})
+    if (std::abs(x) > kMaxCoordinate) {
+      char value[32];
+      std::snprintf(value, sizeof value, "%g", x);
+      fail(PROX_ERROR_INVALID_ARGUMENT,
+           name + ".position has a coordinate of " + value + ", beyond the +-1e50 Proxima supports");
+    }
+  double q[4] = {p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z};
   for (int i = 0; i < 4; ++i) need_finite(q[i], name + ".rotation");
-  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  if (!(n > 1e-12)) fail(PROX_ERROR_INVALID_ARGUMENT, name + ".rotation is a zero quaternion");
-  return Pose::from_quaternion(t, q[0] / n, q[1] / n, q[2] / n, q[3] / n);
+  if (!normalize_quaternion(q)) fail(PROX_ERROR_INVALID_ARGUMENT, name + ".rotation is a zero quaternion");
+  return Pose::from_quaternion(t, q[0], q[1], q[2], q[3]);
 }
 
 inline proxPose to_c(const Pose& p) {
@@ -171,7 +203,7 @@ inline void check(const Status& s) {
 }
 
 inline ForceSettings to_force(const proxForceSettings& f, double cutoff) {
-  if (f.curve != PROX_FORCE_EXPONENTIAL && f.curve != PROX_FORCE_LINEAR)
+  if (enum_value(f.curve) != PROX_FORCE_EXPONENTIAL && enum_value(f.curve) != PROX_FORCE_LINEAR)
     fail(PROX_ERROR_INVALID_ARGUMENT, "def->force.curve is not a proxForceCurve");
   need_positive(f.maxForce, "def->force.maxForce");
   need_positive(f.maxTorque, "def->force.maxTorque");
@@ -180,7 +212,7 @@ inline ForceSettings to_force(const proxForceSettings& f, double cutoff) {
   if (f.safetyDistance < 0.0 || !(f.safetyDistance < cutoff))
     fail(PROX_ERROR_INVALID_ARGUMENT, "def->force.safetyDistance must be in [0, cutoff)");
   ForceSettings s;
-  s.curve = f.curve == PROX_FORCE_LINEAR ? ForceCurve::Linear : ForceCurve::Exponential;
+  s.curve = enum_value(f.curve) == PROX_FORCE_LINEAR ? ForceCurve::Linear : ForceCurve::Exponential;
   s.max_force = f.maxForce;
   s.max_torque = f.maxTorque;
   s.safety_distance = f.safetyDistance;

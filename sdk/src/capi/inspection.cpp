@@ -13,7 +13,7 @@ proxResult proxGetForcePreset(proxForcePreset preset, proxForceSettings* force, 
     need(force, "force");
     need(cutoff, "cutoff");
     ForceSettings f;
-    switch (preset) {
+    switch (enum_value(preset)) {
       case PROX_FORCE_PRESET_HARD:
         f = hard_force_settings();
         break;

@@ -6,7 +6,12 @@
 #include "io/gltf.h"
 #endif
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <mutex>
 
 using namespace prox;
 using namespace prox::capi;
@@ -14,6 +19,17 @@ using namespace prox::capi;
 namespace {
 
 proxMeshId make_mesh_id(proxWorldId world, runtime::Handle h) { return {h.index + 1, h.generation, world}; }
+
+uint64_t warnings_key(const proxMeshId& mesh) { return uint64_t{mesh.index1 - 1} << 32 | mesh.generation; }
+
+// Records what loading `mesh` skipped, for proxMesh_GetWarnings.
+void keep_warnings(const proxMeshId& mesh, const std::vector<std::string>& warnings) {
+  if (warnings.empty()) return;
+  std::string text;
+  for (const std::string& w : warnings) text += w + "\n";
+  std::lock_guard<std::mutex> lock(g_worlds_mutex);
+  g_worlds[mesh.world.index1 - 1].mesh_warnings[warnings_key(mesh)] = std::move(text);
+}
 
 // `source`: the file the data came from, named in the error when it is not
 // a valid mesh.
@@ -23,6 +39,18 @@ proxMeshId add_mesh(proxWorldId world_id, runtime::World& world, const MeshInput
   const runtime::Handle h = world.create_mesh(input, status);
   if (!status && !source.empty()) fail(status_code(status), source + ": " + status.message());
   check(status);
+  // Checked on the built mesh's bounds (the mesh layer accepts any finite
+  // coordinate; the distance kernel does not).
+  const Aabb& box = world.mesh(h).bounds();
+  for (const double x : {box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z})
+    if (std::abs(x) > kMaxCoordinate) {
+      Status ignored;
+      world.destroy_mesh(h, ignored);
+      char value[32];
+      std::snprintf(value, sizeof value, "%g", x);
+      fail(PROX_ERROR_INVALID_MESH, (source.empty() ? "" : source + ": ") + "a vertex has a coordinate of " +
+                                        value + ", beyond the +-1e50 Proxima supports");
+    }
   return make_mesh_id(world_id, h);
 }
 
@@ -70,13 +98,15 @@ proxResult proxWorld_LoadMesh(proxWorldId world, const char* path, proxMeshId* m
 #if PROX_WITH_GLTF
     if (ext == "gltf" || ext == "glb") {
       std::vector<io::GltfMesh> parts;
-      check(io::load_gltf(p, io::GltfLoadOptions{}, parts));
+      std::vector<std::string> warnings;
+      check(io::load_gltf(p, io::GltfLoadOptions{}, parts, &warnings));
       if (parts.empty()) fail(PROX_ERROR_INVALID_MESH, p + ": the scene has no triangles");
       const io::GltfMesh& m = parts.front();
       *mesh = add_mesh(world, w,
                        {m.positions.data(), static_cast<uint32_t>(m.positions.size() / 3), m.indices.data(),
                         static_cast<uint32_t>(m.indices.size() / 3)},
                        p);
+      keep_warnings(*mesh, warnings);
       return;
     }
 #endif
@@ -92,6 +122,8 @@ proxResult proxMesh_Destroy(proxMeshId mesh) {
     need_stopped(*w);
     Status s;
     if (!w->destroy_mesh(h, s)) fail(PROX_ERROR_INVALID_ARGUMENT, s.message());
+    std::lock_guard<std::mutex> lock(g_worlds_mutex);
+    g_worlds[mesh.world.index1 - 1].mesh_warnings.erase(warnings_key(mesh));
   });
 }
 
@@ -104,6 +136,38 @@ proxResult proxMesh_GetInfo(proxMeshId mesh, proxMeshInfo* info) {
     const MeshStats& s = m.stats();
     *info = proxMeshInfo{s.triangles,         s.vertices,           s.dropped_triangles, s.boundary_edges,
                          s.nonmanifold_edges, to_c(m.bounds().min), to_c(m.bounds().max)};
+  });
+}
+
+proxResult proxMesh_GetWarnings(proxMeshId mesh, char* buffer, int32_t capacity, int32_t* length) {
+  return guard("proxMesh_GetWarnings", [&] {
+    need(length, "length");
+    *length = 0;
+    if (capacity < 0) fail(PROX_ERROR_INVALID_ARGUMENT, "capacity is negative");
+    if (capacity > 0 && buffer == nullptr)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "buffer is NULL but capacity is > 0");
+    runtime::World* w = nullptr;
+    mesh_of(mesh, w);
+    std::string text;
+    {
+      std::lock_guard<std::mutex> lock(g_worlds_mutex);
+      const auto& warnings = g_worlds[mesh.world.index1 - 1].mesh_warnings;
+      const auto it = warnings.find(warnings_key(mesh));
+      if (it != warnings.end()) text = it->second;
+    }
+    if (text.size() > static_cast<std::size_t>(INT32_MAX - 1)) text.resize(INT32_MAX - 1);
+    *length = static_cast<int32_t>(text.size());
+    if (capacity == 0) {
+      if (!text.empty())
+        fail(PROX_ERROR_CAPACITY, "the warnings need " + std::to_string(text.size() + 1) + " bytes");
+      return;
+    }
+    const std::size_t fits = std::min(text.size(), static_cast<std::size_t>(capacity) - 1);
+    std::memcpy(buffer, text.data(), fits);
+    buffer[fits] = '\0';
+    if (fits < text.size())
+      fail(PROX_ERROR_CAPACITY, "the warnings need " + std::to_string(text.size() + 1) +
+                                    " bytes; capacity is " + std::to_string(capacity));
   });
 }
 

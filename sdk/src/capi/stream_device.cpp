@@ -86,13 +86,13 @@ void check_sample(const proxPose& pose, double time, runtime::StreamSample& out)
     fail(PROX_ERROR_INVALID_ARGUMENT, "pose->position is not finite");
   if (!(finite3(q.w, q.x, q.y) && std::isfinite(q.z)))
     fail(PROX_ERROR_INVALID_ARGUMENT, "pose->rotation is not finite");
-  const double n = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
-  if (!(n > 1e-12)) fail(PROX_ERROR_INVALID_ARGUMENT, "pose->rotation is a zero quaternion");
+  double unit[4] = {q.w, q.x, q.y, q.z};
+  if (!normalize_quaternion(unit)) fail(PROX_ERROR_INVALID_ARGUMENT, "pose->rotation is a zero quaternion");
   if (!(std::isfinite(time) && time >= 0.0))
     fail(PROX_ERROR_INVALID_ARGUMENT, "timeSeconds must be finite and >= 0 (on proxGetTime's clock)");
   out.time = time;
   out.position[0] = pose.position.x, out.position[1] = pose.position.y, out.position[2] = pose.position.z;
-  out.rotation[0] = q.w / n, out.rotation[1] = q.x / n, out.rotation[2] = q.y / n, out.rotation[3] = q.z / n;
+  for (int i = 0; i < 4; ++i) out.rotation[i] = unit[i];
 }
 
 }  // namespace
@@ -138,7 +138,7 @@ proxResult proxWorld_CreateStreamDevice(proxWorldId world, const proxStreamDevic
     need(def, "def");
     need_def(*def, "proxDefaultStreamDeviceDef");
     runtime::StreamSettings s;
-    switch (def->mode) {
+    switch (enum_value(def->mode)) {
       case PROX_STREAM_HOLD:
         s.mode = runtime::StreamMode::Hold;
         break;

@@ -51,7 +51,7 @@ proxResult proxWorld_StartThreads(proxWorldId world, const proxThreadsDef* def) 
     s.max_force_rate = def->maxForceRate;
     s.max_torque_rate = def->maxTorqueRate;
     s.trust_distance = def->trustDistance;
-    switch (def->hapticTiming) {
+    switch (enum_value(def->hapticTiming)) {
       case PROX_TIMING_AUTO:
         s.haptic_timing = runtime::HapticTiming::Auto;
         break;
@@ -87,7 +87,8 @@ proxResult proxWorld_GetThreadStats(proxWorldId world, proxThread thread, proxTh
     *stats = proxThreadStats{};
     stats->pinnedCore = -1;
     const runtime::World& w = world_of(world);
-    if (thread != PROX_THREAD_HAPTIC && thread != PROX_THREAD_LOCAL && thread != PROX_THREAD_GLOBAL)
+    if (enum_value(thread) != PROX_THREAD_HAPTIC && enum_value(thread) != PROX_THREAD_LOCAL &&
+        enum_value(thread) != PROX_THREAD_GLOBAL)
       fail(PROX_ERROR_INVALID_ARGUMENT, "thread is not a proxThread");
     const runtime::Threads* t = w.threads();
     if (!t) return;  // never started: all zero

@@ -26,14 +26,14 @@ proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
     if (def->apiVersion != PROX_API_VERSION)
       fail(PROX_ERROR_VERSION_MISMATCH, "def comes from API version " + std::to_string(def->apiVersion) +
                                             ", the library is " + std::to_string(PROX_API_VERSION));
-    if (def->method != PROX_METHOD_PRECISE && def->method != PROX_METHOD_ORIGINAL &&
-        def->method != PROX_METHOD_REFERENCE)
+    const int32_t method = enum_value(def->method);
+    if (method != PROX_METHOD_PRECISE && method != PROX_METHOD_ORIGINAL && method != PROX_METHOD_REFERENCE)
       fail(PROX_ERROR_INVALID_ARGUMENT, "def->method is not a proxMethod");
     need_positive(def->cutoff, "def->cutoff");
     runtime::WorldSettings s;
-    s.method = def->method == PROX_METHOD_ORIGINAL    ? Method::Original
-               : def->method == PROX_METHOD_REFERENCE ? Method::Reference
-                                                      : Method::Precise;
+    s.method = method == PROX_METHOD_ORIGINAL    ? Method::Original
+               : method == PROX_METHOD_REFERENCE ? Method::Reference
+                                                 : Method::Precise;
     s.cutoff = def->cutoff;
     s.force = to_force(def->force, def->cutoff);
     auto w = std::make_unique<runtime::World>(s);
@@ -55,6 +55,7 @@ proxResult proxDestroyWorld(proxWorldId world) {
     {
       std::lock_guard<std::mutex> lock(g_worlds_mutex);
       doomed = std::move(g_worlds[world.index1 - 1].world);
+      g_worlds[world.index1 - 1].mesh_warnings.clear();
     }
     // No device callback runs once the threads stop; then no other thread
     // may still hold one of the world's streamed devices.

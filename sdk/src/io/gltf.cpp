@@ -1,6 +1,7 @@
 #include "io/gltf.h"
 
 #include "io/file.h"
+#include "io/gltf_precheck.h"
 
 // tinygltf is compiled here and nowhere else, without any image support: no
 // stb_image, external images are not even opened, embedded ones go to a no-op
@@ -29,16 +30,19 @@
 #include <map>
 #include <memory>
 #include <new>
+#include <set>
 #include <system_error>
 #include <utility>
 
 namespace prox::io {
 namespace {
 
-using Json = nlohmann::json;
+using gltf_detail::check_glb;
+using gltf_detail::GlbLayout;
+using gltf_detail::precheck_json;
+using gltf_detail::read_u32le;
 
 constexpr std::uint64_t kMaxU32 = 0xFFFFFFFFu;
-constexpr int kMaxJsonDepth = 256;  // tinygltf parses extras recursively
 
 // ---------------------------------------------------------------------------
 // Files
@@ -70,183 +74,9 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
   return true;
 }
 
-std::uint32_t read_u32le(const unsigned char* p) {
-  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
-         static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
-}
-
 std::string trim(std::string s) {
   while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
   return s;
-}
-
-// ---------------------------------------------------------------------------
-// The GLB container, checked completely before tinygltf sees it (tinygltf
-// 2.7 lets a BIN chunk header claim up to 8 bytes past the end).
-
-constexpr std::uint32_t kChunkJson = 0x4E4F534A;
-constexpr std::uint32_t kChunkBin = 0x004E4942;
-
-struct GlbLayout {
-  std::size_t length = 0;  // the container's declared length (<= the file size)
-  std::size_t json_offset = 0;
-  std::size_t json_size = 0;
-};
-
-Status check_glb(const std::vector<unsigned char>& bytes, const std::string& name, GlbLayout& glb) {
-  const auto error = [&](const std::string& message) -> Status {
-    return {StatusCode::ParseError, name + ": " + message};
-  };
-  const std::size_t size = bytes.size();
-  if (size < 20)
-    return error("truncated GLB: " + std::to_string(size) + " bytes, a header and chunk need 20");
-  const std::uint32_t version = read_u32le(&bytes[4]);
-  if (version != 2)
-    return {StatusCode::Unsupported,
-            name + ": GLB container version " + std::to_string(version) + " (only version 2 is supported)"};
-  const std::uint32_t length = read_u32le(&bytes[8]);
-  if (length > size)
-    return error("truncated GLB: the header declares " + std::to_string(length) + " bytes, the file has " +
-                 std::to_string(size));
-  if (length < 20) return error("GLB header declares a length of " + std::to_string(length) + " bytes");
-  const std::uint64_t json_size = read_u32le(&bytes[12]);
-  if (read_u32le(&bytes[16]) != kChunkJson) return error("the first GLB chunk is not JSON");
-  if (json_size == 0 || 20 + json_size > length)
-    return error("the GLB JSON chunk (" + std::to_string(json_size) +
-                 " bytes) does not fit in the container (" + std::to_string(length) + " bytes)");
-  const std::uint64_t bin_header = 20 + json_size;
-  if (bin_header < length) {  // a second chunk follows
-    if (bin_header + 8 > length) return error("truncated GLB: the second chunk header is cut off");
-    const std::uint64_t bin_size = read_u32le(&bytes[bin_header]);
-    if (read_u32le(&bytes[bin_header + 4]) != kChunkBin) return error("the second GLB chunk is not BIN");
-    if (bin_header + 8 + bin_size > length)
-      return error("truncated GLB: the BIN chunk declares " + std::to_string(bin_size) + " bytes, " +
-                   std::to_string(length - bin_header - 8) + " are left");
-  }
-  glb.length = length;
-  glb.json_offset = 20;
-  glb.json_size = static_cast<std::size_t>(json_size);
-  return Status::ok();
-}
-
-// ---------------------------------------------------------------------------
-// A first look at the JSON, before tinygltf: the things tinygltf would get
-// wrong or reject with a less useful message.
-
-// Nesting depth outside strings; tinygltf recurses once per level.
-int json_depth(const char* text, std::size_t size) {
-  int depth = 0;
-  int max_depth = 0;
-  bool in_string = false;
-  for (std::size_t i = 0; i < size; ++i) {
-    const char c = text[i];
-    if (in_string) {
-      if (c == '\\')
-        ++i;
-      else if (c == '"')
-        in_string = false;
-    } else if (c == '"') {
-      in_string = true;
-    } else if (c == '[' || c == '{') {
-      max_depth = std::max(max_depth, ++depth);
-    } else if (c == ']' || c == '}') {
-      --depth;
-    }
-  }
-  return max_depth;
-}
-
-// Extensions that change nothing about triangle positions: a file requiring
-// only these loads (its textures and materials are ignored anyway).
-bool geometry_neutral(const std::string& extension) {
-  return extension == "KHR_mesh_quantization" ||  // decoded below
-         extension == "KHR_texture_transform" || extension.rfind("KHR_materials_", 0) == 0 ||
-         extension == "KHR_texture_basisu" || extension == "EXT_texture_webp" ||
-         extension == "EXT_texture_avif";
-}
-
-// tinygltf's reading of an integer property (GetInt): a JSON integer, cast.
-bool json_int(const Json& object, const char* key, int& value) {
-  const auto it = object.find(key);
-  if (it == object.end() || !it->is_number_integer()) return false;
-  value = static_cast<int>(it->get<std::int64_t>());
-  return true;
-}
-// tinygltf's reading of an unsigned property.
-std::uint64_t json_unsigned(const Json& object, const char* key, std::uint64_t fallback) {
-  const auto it = object.find(key);
-  return it != object.end() && it->is_number_unsigned() ? it->get<std::uint64_t>() : fallback;
-}
-
-Status precheck_json(const char* text, std::size_t size, const std::string& name) {
-  const auto error = [&](const std::string& message) -> Status {
-    return {StatusCode::ParseError, name + ": " + message};
-  };
-  if (json_depth(text, size) > kMaxJsonDepth)
-    return error("JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-  Json root;
-  try {
-    root = Json::parse(text, text + size);
-  } catch (const Json::exception& e) {
-    return error(std::string("invalid JSON: ") + e.what());
-  }
-  if (!root.is_object()) return error("the JSON root is not an object");
-
-  const auto asset = root.find("asset");
-  if (asset == root.end() || !asset->is_object() || !asset->contains("version") ||
-      !(*asset)["version"].is_string())
-    return error("no asset.version: not a glTF file");
-  const std::string version = (*asset)["version"].get<std::string>();
-  if (version.substr(0, version.find('.')) != "2")
-    return {StatusCode::Unsupported, name + ": glTF version " + version + " (only 2.x is supported)"};
-
-  const auto required = root.find("extensionsRequired");
-  if (required != root.end()) {
-    if (!required->is_array()) return error("extensionsRequired is not an array");
-    std::string unsupported;
-    for (const Json& extension : *required) {
-      if (!extension.is_string()) return error("extensionsRequired holds a non-string");
-      const std::string& e = extension.get_ref<const std::string&>();
-      if (!geometry_neutral(e)) unsupported += (unsupported.empty() ? "" : ", ") + e;
-    }
-    if (!unsupported.empty())
-      return {StatusCode::Unsupported,
-              name + ": requires the glTF extension(s) " + unsupported + ", which Proxima cannot decode"};
-  }
-
-  // tinygltf hands an embedded image's bytes to the image callback as
-  // &buffer.data[bufferView.byteOffset] without checking the view against the
-  // buffer (it checks only the indices); a buffer's data always has its
-  // byteLength, so check against that.
-  const auto images = root.find("images");
-  const auto views = root.find("bufferViews");
-  const auto buffers = root.find("buffers");
-  if (images != root.end() && images->is_array() && views != root.end() && views->is_array() &&
-      buffers != root.end() && buffers->is_array()) {
-    for (std::size_t i = 0; i < images->size(); ++i) {
-      const Json& image = (*images)[i];
-      int view_index = -1;
-      if (!image.is_object() || !json_int(image, "bufferView", view_index) || view_index < 0 ||
-          static_cast<std::size_t>(view_index) >= views->size())
-        continue;  // tinygltf rejects or ignores these itself
-      const Json& view = (*views)[static_cast<std::size_t>(view_index)];
-      int buffer_index = -1;
-      if (!view.is_object() || !json_int(view, "buffer", buffer_index) || buffer_index < 0 ||
-          static_cast<std::size_t>(buffer_index) >= buffers->size() ||
-          !(*buffers)[static_cast<std::size_t>(buffer_index)].is_object())
-        continue;
-      const std::uint64_t buffer_length =
-          json_unsigned((*buffers)[static_cast<std::size_t>(buffer_index)], "byteLength", 0);
-      const std::uint64_t offset = json_unsigned(view, "byteOffset", 0);
-      const std::uint64_t length = json_unsigned(view, "byteLength", 0);
-      if (offset >= buffer_length || length > buffer_length - offset)
-        return error("image " + std::to_string(i) + ": bufferView " + std::to_string(view_index) +
-                     " (byteOffset " + std::to_string(offset) + ", byteLength " + std::to_string(length) +
-                     ") lies outside buffer " + std::to_string(buffer_index) + " (" +
-                     std::to_string(buffer_length) + " bytes)");
-    }
-  }
-  return Status::ok();
 }
 
 // ---------------------------------------------------------------------------
@@ -358,7 +188,8 @@ struct LocalMesh {  // one mesh's triangles in its own coordinates
 
 class Decoder {
  public:
-  Decoder(const tinygltf::Model& model, const std::string& name) : model_(model), name_(name) {}
+  Decoder(const tinygltf::Model& model, const std::string& name, std::vector<std::string>* warnings)
+      : model_(model), name_(name), warnings_(warnings) {}
 
   Status run(GltfSceneMode mode, const std::string& stem, std::vector<GltfMesh>& out) {
     std::vector<int> roots;
@@ -560,7 +391,7 @@ class Decoder {
   // turn about the cylinder's axis. A skinned mesh quantized by
   // KHR_mesh_quantization keeps its dequantization in the inverse bind
   // matrices, so it comes out in quantized units.
-  Status decode_mesh(int mesh_index, LocalMesh& mesh) const {
+  Status decode_mesh(int mesh_index, LocalMesh& mesh) {
     const tinygltf::Mesh& source = model_.meshes[static_cast<std::size_t>(mesh_index)];
     // POSITION accessor -> (its first vertex in `mesh`, its vertex count).
     std::map<int, std::pair<std::uint32_t, std::size_t>> position_base;
@@ -579,6 +410,8 @@ class Decoder {
       // glTF: a primitive without POSITION is not rendered; nothing to read.
       const auto position = primitive.attributes.find("POSITION");
       if (position == primitive.attributes.end()) continue;
+      for (const auto& [attribute, accessor] : primitive.attributes)
+        if (attribute != "POSITION") check_unused(attribute, accessor, where);
 
       // Primitives sharing a POSITION accessor share its vertices.
       auto found = position_base.find(position->second);
@@ -808,16 +641,54 @@ class Decoder {
     return Status::ok();
   }
 
+  // An attribute Proxima does not read (NORMAL, TEXCOORD_0, ...): one that is
+  // invalid is skipped, not an error, and reported once per accessor.
+  void check_unused(const std::string& attribute, int index, const std::string& where) {
+    if (warnings_ == nullptr || !warned_.insert(index).second) return;
+    const std::string what = where + ": " + attribute + " accessor " + std::to_string(index);
+    Status status;
+    if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size()) {
+      status = error(what + " does not exist (the file has " + std::to_string(model_.accessors.size()) + ")");
+    } else {
+      const tinygltf::Accessor& accessor = model_.accessors[static_cast<std::size_t>(index)];
+      const int components = tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(accessor.type));
+      const std::size_t size = component_size(accessor.componentType);
+      if (components <= 0 || size == 0) {
+        status = error(what + ": " + type_name(accessor.type) + " of " +
+                       component_type_name(accessor.componentType) + " is not a valid accessor type");
+      } else if (accessor.bufferView != -1) {
+        const std::size_t element = size * static_cast<std::size_t>(components);
+        const unsigned char* data = nullptr;
+        std::size_t length = 0;
+        status = buffer_view(accessor.bufferView, what, data, length);
+        if (status) {
+          const std::size_t view_stride =
+              model_.bufferViews[static_cast<std::size_t>(accessor.bufferView)].byteStride;
+          if (view_stride != 0 && view_stride < element)
+            status = error(what + ": byteStride " + std::to_string(view_stride) + " is less than the " +
+                           std::to_string(element) + "-byte element");
+          else
+            status = check_span(accessor.byteOffset, accessor.count, view_stride != 0 ? view_stride : element,
+                                element, length, what);
+        }
+      }
+    }
+    if (!status)
+      warnings_->push_back(status.message() + " (skipped: Proxima reads only POSITION and indices)");
+  }
+
   const tinygltf::Model& model_;
   const std::string& name_;
+  std::vector<std::string>* warnings_;
+  std::set<int> warned_;
   std::vector<LocalMesh> meshes_;
 };
 
-Status load(const std::string& path, const GltfLoadOptions& options, std::vector<GltfMesh>& out) {
-  std::vector<unsigned char> bytes;
-  Status status = read_file(path, bytes);
-  if (!status) return status;
-
+// `path` names the file in messages and gives its extension, stem and the
+// directory external buffers are read from.
+Status load(std::vector<unsigned char>& bytes, const std::string& path, const GltfLoadOptions& options,
+            std::vector<GltfMesh>& out, std::vector<std::string>* warnings) {
+  Status status;
   // Binary or text by content: a GLB starts with the magic "glTF".
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
   const std::filesystem::path fs_path(path);
@@ -858,16 +729,29 @@ Status load(const std::string& path, const GltfLoadOptions& options, std::vector
   }
   bytes = {};  // tinygltf keeps its own copy of the buffers
 
-  return Decoder(model, path).run(options.mode, fs_path.stem().string(), out);
+  return Decoder(model, path, warnings).run(options.mode, fs_path.stem().string(), out);
 }
 
 }  // namespace
 
-Status load_gltf(const std::string& path, const GltfLoadOptions& options, std::vector<GltfMesh>& out) {
+Status load_gltf(const std::string& path, const GltfLoadOptions& options, std::vector<GltfMesh>& out,
+                 std::vector<std::string>* warnings) {
   out.clear();
+  if (warnings != nullptr) warnings->clear();
+  std::vector<unsigned char> bytes;
+  const Status status = read_file(path, bytes);
+  if (!status) return status;
+  return load_gltf_bytes(std::move(bytes), path, options, out, warnings);
+}
+
+Status load_gltf_bytes(std::vector<unsigned char> bytes, const std::string& path,
+                       const GltfLoadOptions& options, std::vector<GltfMesh>& out,
+                       std::vector<std::string>* warnings) {
+  out.clear();
+  if (warnings != nullptr) warnings->clear();
   Status status;
   try {
-    status = load(path, options, out);
+    status = load(bytes, path, options, out, warnings);
   } catch (const std::bad_alloc&) {
     status = {StatusCode::ParseError, path + ": out of memory (sizes in the file are too large)"};
   } catch (const std::exception& e) {
@@ -875,7 +759,10 @@ Status load_gltf(const std::string& path, const GltfLoadOptions& options, std::v
     // GLB buffer of byteLength 0).
     status = {StatusCode::ParseError, path + ": malformed glTF (" + e.what() + ")"};
   }
-  if (!status) out.clear();
+  if (!status) {
+    out.clear();
+    if (warnings != nullptr) warnings->clear();
+  }
   return status;
 }
 

@@ -49,6 +49,17 @@ struct GltfLoadOptions {
 // anything malformed (truncated or corrupt container or JSON, out-of-range
 // references or bytes, index values past the vertex count, non-finite
 // positions). `out` is empty after an error.
-Status load_gltf(const std::string& path, const GltfLoadOptions& options, std::vector<GltfMesh>& out);
+//
+// `warnings`, when given, receives what was skipped: attributes Proxima does
+// not read (NORMAL, TEXCOORD_0, ...) of the primitives it reads, when they are
+// invalid (an accessor running past its bufferView, say), one message each
+// naming the file, mesh, primitive and accessor.
+Status load_gltf(const std::string& path, const GltfLoadOptions& options, std::vector<GltfMesh>& out,
+                 std::vector<std::string>* warnings = nullptr);
+// The same, from the file's bytes already in memory; `path` is used in
+// messages, and its directory for external buffers.
+Status load_gltf_bytes(std::vector<unsigned char> bytes, const std::string& path,
+                       const GltfLoadOptions& options, std::vector<GltfMesh>& out,
+                       std::vector<std::string>* warnings = nullptr);
 
 }  // namespace prox::io

@@ -32,6 +32,14 @@ const char* skip_plus(std::string_view s) {
   return p;
 }
 
+// A token for an error message, cut short: a line may be 10^8 characters.
+std::string quoted(std::string_view token) {
+  constexpr std::size_t kShown = 40;
+  if (token.size() <= kShown) return "'" + std::string(token) + "'";
+  return "'" + std::string(token.substr(0, kShown)) + "...' (" + std::to_string(token.size()) +
+         " characters)";
+}
+
 bool parse_double(std::string_view s, double& x) {
   const char* end = s.data() + s.size();
   const auto [ptr, ec] = std::from_chars(skip_plus(s), end, x);
@@ -108,8 +116,8 @@ class Parser {
     int n = 0;
     for (std::string_view token = next_token(p, end); !token.empty(); token = next_token(p, end), ++n) {
       double x;
-      if (!parse_double(token, x)) return error("malformed number '" + std::string(token) + "'");
-      if (!std::isfinite(x)) return error("non-finite coordinate '" + std::string(token) + "'");
+      if (!parse_double(token, x)) return error("malformed number " + quoted(token));
+      if (!std::isfinite(x)) return error("non-finite coordinate " + quoted(token));
       if (n < 3) xyz[n] = x;
     }
     if (n < 3) return error("vertex has " + std::to_string(n) + " coordinates; 3 are needed");
@@ -122,8 +130,7 @@ class Parser {
     face_.clear();
     for (std::string_view token = next_token(p, end); !token.empty(); token = next_token(p, end)) {
       long long index;
-      if (!parse_face_vertex(token, index))
-        return error("malformed face vertex '" + std::string(token) + "'");
+      if (!parse_face_vertex(token, index)) return error("malformed face vertex " + quoted(token));
       if (index == 0) return error("face vertex index 0 (OBJ indices start at 1)");
       // Negative indices count back from the last vertex read so far.
       const long long resolved = index > 0 ? index - 1 : static_cast<long long>(vertex_count_) + index;

@@ -1,5 +1,6 @@
 #include "io/poses.h"
 
+#include "common/quaternion.h"
 #include "io/file.h"
 
 #include <cmath>
@@ -10,6 +11,21 @@ namespace prox::io {
 
 Status parse_poses(const std::string& text, const std::string& name, std::vector<PoseRecord>& out) {
   out.clear();
+  // Counted before parsing, so a file far too long is refused in one fast
+  // pass and never held as poses.
+  std::size_t poses = 0, line_number = 1;
+  bool line_start = true;
+  for (const char c : text) {
+    if (c == '\n') {
+      line_start = true;
+      ++line_number;
+    } else if (line_start && c != ' ' && c != '\t' && c != '\r') {
+      line_start = false;
+      if (c != '#' && ++poses > kMaxPoses)
+        return Status(StatusCode::ParseError, name + ":" + std::to_string(line_number) + ": more than " +
+                                                  std::to_string(kMaxPoses) + " poses; split the path");
+    }
+  }
   std::istringstream lines(text);
   std::string line;
   int number = 0;
@@ -31,9 +47,9 @@ Status parse_poses(const std::string& text, const std::string& name, std::vector
       return Status(StatusCode::ParseError, where + ": expected 7 numbers: tx ty tz qw qx qy qz");
     for (double x : v)
       if (!std::isfinite(x)) return Status(StatusCode::ParseError, where + ": a number is not finite");
-    const double n = std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5] + v[6] * v[6]);
-    if (!(n > 1e-12)) return Status(StatusCode::ParseError, where + ": the quaternion is zero");
-    out.push_back({{v[0], v[1], v[2]}, {v[3] / n, v[4] / n, v[5] / n, v[6] / n}});
+    if (!normalize_quaternion(v + 3))
+      return Status(StatusCode::ParseError, where + ": the quaternion is zero");
+    out.push_back({{v[0], v[1], v[2]}, {v[3], v[4], v[5], v[6]}});
   }
   if (out.empty()) return Status(StatusCode::ParseError, name + ": no pose in the file");
   return Status();

@@ -24,6 +24,8 @@
 namespace prox::runtime {
 namespace {
 
+constexpr int kMaxContactsPerTool = 1 << 20;  // ThreadSettings::max_contacts
+
 using Clock = std::chrono::steady_clock;
 
 bool finite(double v) { return std::isfinite(v); }
@@ -95,10 +97,12 @@ Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), 
     tool->game_pose.store(start);
     tool->wrench.store({b.wrench});
     tool->contacts = b.contacts;
-    // The haptic loop's snapshots never grow once the threads run.
+    // The haptic loop's snapshots never grow once the threads run. Clamped
+    // to the range start() accepts: it validates after this constructor,
+    // and an unchecked count must not reserve gigabytes first.
     for (int k = 0; k < 3; ++k)
       tool->snapshots.buffer(k).contacts.reserve(
-          static_cast<std::size_t>(std::max(1, settings_.max_contacts)));
+          static_cast<std::size_t>(std::clamp(settings_.max_contacts, 1, kMaxContactsPerTool)));
     tool->filter = SafetyFilter({world.settings_.force.max_force, world.settings_.force.max_torque,
                                  settings_.max_force_rate, settings_.max_torque_rate});
     tool_of_body_[i] = static_cast<int>(tools_.size());
@@ -115,12 +119,16 @@ bool Threads::start(Status& status) {
     status = Status(StatusCode::InvalidArgument, message);
     return false;
   };
-  if (!(finite(s.haptic_rate) && s.haptic_rate > 0.0 && s.haptic_rate <= 100000.0))
-    return bad("haptic rate must be in (0, 100000] Hz (it is " + std::to_string(s.haptic_rate) + ")");
-  if (!(finite(s.local_rate) && s.local_rate >= 0.0))
-    return bad("local rate must be >= 0 Hz (it is " + std::to_string(s.local_rate) + ")");
-  if (!(finite(s.global_rate) && s.global_rate >= 0.0))
-    return bad("global rate must be >= 0 Hz (it is " + std::to_string(s.global_rate) + ")");
+  // At least 1 Hz: a thread sleeps until its next deadline, so a longer
+  // period would delay stopping by as much (and a tiny rate's period would
+  // not fit a clock's nanosecond count at all).
+  if (!(finite(s.haptic_rate) && s.haptic_rate >= 1.0 && s.haptic_rate <= 100000.0))
+    return bad("haptic rate must be in [1, 100000] Hz (it is " + std::to_string(s.haptic_rate) + ")");
+  if (!(finite(s.local_rate) && (s.local_rate == 0.0 || s.local_rate >= 1.0)))
+    return bad("local rate must be 0 (back to back) or >= 1 Hz (it is " + std::to_string(s.local_rate) + ")");
+  if (!(finite(s.global_rate) && (s.global_rate == 0.0 || s.global_rate >= 1.0)))
+    return bad("global rate must be 0 (back to back) or >= 1 Hz (it is " + std::to_string(s.global_rate) +
+               ")");
   if (!(finite(s.stale_after) && s.stale_after > 0.0))
     return bad("staleness limit must be > 0 s (it is " + std::to_string(s.stale_after) + ")");
   if (!(finite(s.max_force_rate) && s.max_force_rate > 0.0))
@@ -129,7 +137,7 @@ bool Threads::start(Status& status) {
     return bad("maximum torque rate must be > 0 N m/s (it is " + std::to_string(s.max_torque_rate) + ")");
   if (!(finite(s.trust_distance) && s.trust_distance >= 0.0))
     return bad("trust distance must be >= 0 (it is " + std::to_string(s.trust_distance) + ")");
-  if (s.max_contacts < 1 || s.max_contacts > (1 << 20))
+  if (s.max_contacts < 1 || s.max_contacts > kMaxContactsPerTool)
     return bad("maximum contacts per tool must be in [1, 1048576] (it is " + std::to_string(s.max_contacts) +
                ")");
   if (s.trust_distance == 0.0) settings_.trust_distance = world_.settings_.cutoff;
