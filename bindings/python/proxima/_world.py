@@ -338,6 +338,21 @@ class Mesh:
         check(lib.proxMesh_GetStats(self._idp[0], out))
         return from_c(MeshStats, out[0])
 
+    @property
+    def warnings(self):
+        """What loading the mesh's file skipped without failing (invalid
+        attributes Proxima does not read), one string per warning; [] for
+        none."""
+        length = ffi.new("int32_t*")
+        result = lib.proxMesh_GetWarnings(self._idp[0], ffi.NULL, 0, length)
+        if result != CAPACITY:
+            check(result)
+        if length[0] == 0:
+            return []
+        buffer = ffi.new("char[]", length[0] + 1)
+        check(lib.proxMesh_GetWarnings(self._idp[0], buffer, length[0] + 1, length))
+        return ffi.string(buffer).decode("utf-8", "replace").splitlines()
+
     def destroy(self):
         """Destroys the mesh; refused while bodies use it."""
         check(lib.proxMesh_Destroy(self._idp[0]))

@@ -33,6 +33,35 @@ def test_load_mesh_info_and_stats(world):
     assert stats.hierarchy_bytes > 0 and stats.hierarchy_seconds > 0
 
 
+def test_mesh_warnings_name_what_loading_skipped(world, tmp_path):
+    # One triangle whose unused NORMAL accessor runs past its buffer view:
+    # it loads, and the warning says which attribute was skipped.
+    import base64
+    import json
+    import struct
+    data = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0)
+    gltf = {
+        "asset": {"version": "2.0"},
+        "buffers": [{"byteLength": len(data),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
+        "bufferViews": [{"buffer": 0, "byteLength": len(data)}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+            {"bufferView": 0, "componentType": 5126, "count": 30, "type": "VEC3"},
+        ],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}}]}],
+        "nodes": [{"mesh": 0}],
+        "scenes": [{"nodes": [0]}],
+        "scene": 0,
+    }
+    path = tmp_path / "bad-normal.gltf"
+    path.write_text(json.dumps(gltf))
+    mesh = world.load_mesh(path)
+    assert mesh.info.triangle_count == 1
+    assert len(mesh.warnings) == 1 and "NORMAL" in mesh.warnings[0], mesh.warnings
+    assert world.load_mesh(BUNNY).warnings == []
+
+
 def test_load_mesh_gltf_and_glb_agree_with_obj(world):
     obj = world.load_mesh(BUNNY).info
     glb = world.load_mesh(ASSETS / "bunny.glb").info

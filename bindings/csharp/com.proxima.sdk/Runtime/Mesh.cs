@@ -26,6 +26,22 @@ namespace Proxima
             get { Native.Check(Native.proxMesh_GetStats(id, out MeshStats s)); return s; }
         }
 
+        /// <summary>What loading the mesh's file skipped without failing (invalid attributes
+        /// Proxima does not read), one string per warning; empty for none.</summary>
+        public string[] Warnings
+        {
+            get
+            {
+                Result r = Native.proxMesh_GetWarnings(id, null, 0, out int length);
+                if (r != Result.Success && r != Result.Capacity) throw ProximaException.FromLastError(r);
+                if (length == 0) return new string[0];
+                var buffer = new byte[length + 1];
+                Native.Check(Native.proxMesh_GetWarnings(id, buffer, buffer.Length, out length));
+                string text = System.Text.Encoding.UTF8.GetString(buffer, 0, length);
+                return text.Split(new[] { '\n' }, StringSplitOptions.RemoveEmptyEntries);
+            }
+        }
+
         /// <summary>Fails while bodies use the mesh.</summary>
         public void Destroy() => Native.Check(Native.proxMesh_Destroy(id));
 

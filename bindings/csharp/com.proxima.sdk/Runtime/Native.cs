@@ -149,6 +149,8 @@ namespace Proxima
         internal static extern Result proxMesh_GetInfo(MeshId mesh, out MeshInfo info);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxMesh_GetStats(MeshId mesh, out MeshStats stats);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxMesh_GetWarnings(MeshId mesh, byte[] buffer, int capacity, out int length);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern BodyDef proxDefaultBodyDef();

@@ -42,6 +42,37 @@ namespace Proxima.Tests
         }
 
         [Test]
+        public void WarningsNameWhatLoadingSkipped()
+        {
+            // One triangle whose unused NORMAL accessor runs past its buffer view.
+            var data = new byte[36];
+            Buffer.BlockCopy(new float[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, 0, data, 0, 36);
+            string gltf = "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"byteLength\":36,\"uri\":" +
+                          "\"data:application/octet-stream;base64," + Convert.ToBase64String(data) + "\"}]," +
+                          "\"bufferViews\":[{\"buffer\":0,\"byteLength\":36}],\"accessors\":[" +
+                          "{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"," +
+                          "\"min\":[0,0,0],\"max\":[1,1,0]}," +
+                          "{\"bufferView\":0,\"componentType\":5126,\"count\":30,\"type\":\"VEC3\"}]," +
+                          "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0,\"NORMAL\":1}}]}]," +
+                          "\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}],\"scene\":0}";
+            string path = Path.Combine(Path.GetTempPath(), "proxima-bad-normal-" + Guid.NewGuid() + ".gltf");
+            File.WriteAllText(path, gltf);
+            try
+            {
+                Mesh mesh = world.LoadMesh(path);
+                Assert.AreEqual(1u, mesh.Info.TriangleCount);
+                string[] warnings = mesh.Warnings;
+                Assert.AreEqual(1, warnings.Length, string.Join("|", warnings));
+                StringAssert.Contains("NORMAL", warnings[0]);
+                Assert.AreEqual(0, world.LoadMesh(Support.Asset("bunny.obj")).Warnings.Length);
+            }
+            finally
+            {
+                File.Delete(path);
+            }
+        }
+
+        [Test]
         public void BadArraysAreNamed()
         {
             double[] p = Support.BoxPositions(new Vec3(0, 0, 0), new Vec3(1, 1, 1));
