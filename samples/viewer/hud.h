@@ -1,0 +1,27 @@
+// The HUD: a text-free panel of bars in the top-left corner (this version
+// has no font; docs/viewer.md says how to read it), drawn by the lines
+// pipeline in pixels.
+#pragma once
+
+#include "draw_list.h"
+
+namespace viewer {
+
+struct HudState {
+  double frame_seconds = 0.0;  // the last frame's, CPU and GPU
+  const proxThreadStats* threads = nullptr;  // haptic, local, global; nullptr: the world was stepped
+  std::size_t contacts = 0;
+  double force = 0.0, max_force = 1.0;  // N
+  proxMethod method = PROX_METHOD_PRECISE;
+  DeviceKind device = DeviceKind::none;
+};
+
+// Bars from the top, each a track with its fill: frame time (full at 50 ms;
+// green under 16.7 ms, yellow under 33.3 ms, red above), the haptic, local
+// and global threads' achieved rate (full at the target; global full at
+// 100 Hz), the LMD count (log scale, full at 1000), |force| (full at the
+// maximum). Then two squares: the method (blue precise, orange original)
+// and the device (grey none, violet scripted, teal mouse).
+void add_hud(DrawList& list, const HudState& hud);
+
+}  // namespace viewer

@@ -1,0 +1,32 @@
+// The window's input: the mouse orbits and zooms the camera, right-drag
+// moves the tool (the mouse device), keys toggle what is shown and switch
+// the method and force preset.
+#pragma once
+
+#include "camera.h"
+#include "options.h"
+
+#include <proxima/proxima.h>
+
+struct GLFWwindow;
+
+namespace viewer {
+
+struct Input {
+  Camera* camera = nullptr;
+  Show* show = nullptr;
+  bool mouse_device = false;
+  // Set by the keys; main acts on them and clears them.
+  bool switch_method = false, switch_force = false;
+  // The tool's drag since the last frame, in world units (mouse device).
+  glm::dvec3 tool_drag{0.0};
+
+  double last_x = 0.0, last_y = 0.0;
+  bool orbiting = false, dragging = false;
+  int window_height = 1;
+};
+
+// Installs the callbacks; `input` must outlive the window.
+void attach_input(GLFWwindow* window, Input* input);
+
+}  // namespace viewer
