@@ -1,0 +1,97 @@
+"""The windowed path of proxima-viewer under Xvfb: a swapchain on the CPU
+Vulkan driver, frames presented with the validation layers on, and a
+screenshot of the X screen (`xwd -root`) compared with the headless frame
+of the same scene. Run by ctest:
+
+    python3 window_test.py PATH_TO_PROXIMA_VIEWER PATH_TO_SHARED_ASSETS
+
+Needs xvfb-run, xauth and xwd (Debian: xvfb, xauth, x11-apps).
+"""
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import png  # noqa: E402
+import xwd  # noqa: E402
+
+VIEWER = None
+ASSETS = None
+SIZE = (480, 270)
+SCREEN = "640x480x24"
+
+
+def scene_args():
+    bunny = os.path.join(ASSETS, "bunny.obj")
+    # The surfaces cross (polylines) and touch nearby (strings); the HUD is
+    # left out, as its frame-time bar differs from run to run.
+    return [bunny, bunny, "--pose-b", "0.1", "0", "0", "1", "0", "0", "0", "--size", f"{SIZE[0]}x{SIZE[1]}",
+            "--show", "meshes,strings,polylines,force,grid", "--validation"]
+
+
+def capture(out_dir):
+    """Inside Xvfb: open the window, wait for frames, dump the screen, quit."""
+    viewer = subprocess.Popen([VIEWER, *scene_args()], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    line = viewer.stdout.readline()  # "presenting on ..." after the first frame is presented
+    if "presenting" not in line:
+        viewer.kill()
+        out, err = viewer.communicate()
+        sys.exit(f"the viewer did not present a frame:\n{line}{out}{err}")
+    time.sleep(1.0)  # a few more frames
+    with open(os.path.join(out_dir, "screen.xwd"), "wb") as f:
+        subprocess.run(["xwd", "-root", "-silent"], stdout=f, check=True, timeout=60)
+    viewer.send_signal(signal.SIGTERM)
+    out, err = viewer.communicate(timeout=60)
+    with open(os.path.join(out_dir, "viewer.log"), "w") as f:
+        f.write(line + out + err)
+    sys.exit(viewer.returncode)
+
+
+class WindowTest(unittest.TestCase):
+    def test_window_shows_what_the_headless_frame_shows(self):
+        for tool in ("xvfb-run", "xauth", "xwd"):
+            self.assertIsNotNone(shutil.which(tool), f"{tool} is missing (Debian: xvfb, xauth, x11-apps)")
+        with tempfile.TemporaryDirectory() as d:
+            r = subprocess.run(["xvfb-run", "-a", "-s", f"-screen 0 {SCREEN}", sys.executable, os.path.abspath(__file__),
+                                "--capture", VIEWER, ASSETS, d], capture_output=True, text=True, timeout=300)
+            log = ""
+            if os.path.exists(os.path.join(d, "viewer.log")):
+                with open(os.path.join(d, "viewer.log")) as f:
+                    log = f.read()
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr + log)
+            self.assertNotIn("validation", log)
+            self.assertRegex(log, r"frames at 480x270")
+            width, height, screen = xwd.read(os.path.join(d, "screen.xwd"))
+
+            headless = subprocess.run([VIEWER, *scene_args(), "--headless", "--out", d], capture_output=True,
+                                      text=True, timeout=300)
+            self.assertEqual(headless.returncode, 0, headless.stdout + headless.stderr)
+            frame = png.read(os.path.join(d, "frame-0000.png"))
+
+        # Without a window manager the window sits at the screen's top-left corner.
+        differing, worst = 0, 0
+        for y in range(SIZE[1]):
+            for x in range(SIZE[0]):
+                i, j = 3 * (y * width + x), 3 * (y * SIZE[0] + x)
+                d = max(abs(screen[i + k] - frame.rgb[j + k]) for k in range(3))
+                differing += d > 0
+                worst = max(worst, d)
+        # Measured identical on lavapipe; a few pixels are allowed to round differently.
+        print(f"window against headless: {differing} pixels differ, by up to {worst}", file=sys.stderr)
+        self.assertLessEqual(differing, SIZE[0] * SIZE[1] // 1000, f"{differing} pixels differ, by up to {worst}")
+        # The rest of the screen is not the viewer's: X's black root window.
+        self.assertEqual(screen[3 * (SIZE[1] + 10) * width:3 * (SIZE[1] + 11) * width], bytes(3 * width))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) == 5 and sys.argv[1] == "--capture":
+        VIEWER, ASSETS = sys.argv[2], sys.argv[3]
+        capture(sys.argv[4])
+    VIEWER = os.path.abspath(sys.argv.pop(1))
+    ASSETS = os.path.abspath(sys.argv.pop(1))
+    unittest.main()
