@@ -174,8 +174,18 @@ void Scene::update(FrameData& frame, bool polylines) const {
   }
   check(proxBody_GetWrench(tool_, &frame.wrench));
 
-  frame.polylines.clear();
-  if (polylines) {
+  auto same = [](const proxPose& a, const proxPose& b) {
+    return a.position.x == b.position.x && a.position.y == b.position.y && a.position.z == b.position.z &&
+           a.rotation.w == b.rotation.w && a.rotation.x == b.rotation.x && a.rotation.y == b.rotation.y &&
+           a.rotation.z == b.rotation.z;
+  };
+  if (!polylines) {
+    frame.polylines.clear();
+    frame.polylines_valid = false;
+  } else if (!frame.polylines_valid || !same(frame.polylines_pose, pt)) {
+    frame.polylines.clear();
+    frame.polylines_valid = true;
+    frame.polylines_pose = pt;
     int32_t points = 0, lines = 0;
     r = proxBody_GetIntersections(tool_, nullptr, 0, &points, nullptr, 0, &lines);
     if (r != PROX_ERROR_CAPACITY) check(r);

@@ -31,6 +31,8 @@ struct FrameData {
   glm::dvec3 reference_point{0.0};            // the tool's, world: where the force is drawn
   std::vector<proxContact> contacts;
   std::vector<Polyline> polylines;
+  bool polylines_valid = false;  // computed at polylines_pose: kept while the tool stays there
+  proxPose polylines_pose{};
   proxWrench wrench{};
   bool threads = false;                      // the world's threads run (else it was stepped)
   proxThreadStats thread_stats[3]{};         // haptic, local, global
@@ -46,8 +48,9 @@ class Scene {
   Scene(const Scene&) = delete;
   Scene& operator=(const Scene&) = delete;
 
-  // Reads this frame's data; polylines only when asked (they are computed
-  // on the call).
+  // Reads this frame's data into `frame` (the previous frame's, reused);
+  // polylines only when asked, as they are computed on the call, and only
+  // when the tool has moved since they were.
   void update(FrameData& frame, bool polylines) const;
   // The mouse device: moves the tool (no device holds it) to a pose.
   void set_tool_pose(const proxPose& pose);
