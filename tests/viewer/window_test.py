@@ -5,7 +5,11 @@ of the same scene. Run by ctest:
 
     python3 window_test.py PATH_TO_PROXIMA_VIEWER PATH_TO_SHARED_ASSETS
 
-Needs xvfb-run, xauth and xwd (Debian: xvfb, xauth, x11-apps).
+Then a left-drag in the window (xdotool) must orbit the camera: a second
+screenshot shows the scene from elsewhere.
+
+Needs xvfb-run, xauth, xwd and xdotool (Debian: xvfb, xauth, x11-apps,
+xdotool).
 """
 import os
 import shutil
@@ -45,6 +49,16 @@ def capture(out_dir):
     time.sleep(1.0)  # a few more frames
     with open(os.path.join(out_dir, "screen.xwd"), "wb") as f:
         subprocess.run(["xwd", "-root", "-silent"], stdout=f, check=True, timeout=60)
+    # A left-drag of 80 pixels to the right across the window's middle.
+    x, y = SIZE[0] // 2, SIZE[1] // 2
+    subprocess.run(["xdotool", "mousemove", str(x), str(y), "mousedown", "1"], check=True, timeout=60)
+    for step in range(1, 9):
+        time.sleep(0.05)
+        subprocess.run(["xdotool", "mousemove", str(x + 10 * step), str(y)], check=True, timeout=60)
+    subprocess.run(["xdotool", "mouseup", "1"], check=True, timeout=60)
+    time.sleep(1.0)
+    with open(os.path.join(out_dir, "orbited.xwd"), "wb") as f:
+        subprocess.run(["xwd", "-root", "-silent"], stdout=f, check=True, timeout=60)
     viewer.send_signal(signal.SIGTERM)
     out, err = viewer.communicate(timeout=60)
     with open(os.path.join(out_dir, "viewer.log"), "w") as f:
@@ -54,8 +68,8 @@ def capture(out_dir):
 
 class WindowTest(unittest.TestCase):
     def test_window_shows_what_the_headless_frame_shows(self):
-        for tool in ("xvfb-run", "xauth", "xwd"):
-            self.assertIsNotNone(shutil.which(tool), f"{tool} is missing (Debian: xvfb, xauth, x11-apps)")
+        for tool in ("xvfb-run", "xauth", "xwd", "xdotool"):
+            self.assertIsNotNone(shutil.which(tool), f"{tool} is missing (Debian: xvfb, xauth, x11-apps, xdotool)")
         with tempfile.TemporaryDirectory() as d:
             r = subprocess.run(["xvfb-run", "-a", "-s", f"-screen 0 {SCREEN}", sys.executable, os.path.abspath(__file__),
                                 "--capture", VIEWER, ASSETS, d], capture_output=True, text=True, timeout=300)
@@ -67,6 +81,7 @@ class WindowTest(unittest.TestCase):
             self.assertNotIn("validation", log)
             self.assertRegex(log, r"frames at 480x270")
             width, height, screen = xwd.read(os.path.join(d, "screen.xwd"))
+            _, _, orbited = xwd.read(os.path.join(d, "orbited.xwd"))
 
             headless = subprocess.run([VIEWER, *scene_args(), "--headless", "--out", d], capture_output=True,
                                       text=True, timeout=300)
@@ -86,6 +101,13 @@ class WindowTest(unittest.TestCase):
         self.assertLessEqual(differing, SIZE[0] * SIZE[1] // 1000, f"{differing} pixels differ, by up to {worst}")
         # The rest of the screen is not the viewer's: X's black root window.
         self.assertEqual(screen[3 * (SIZE[1] + 10) * width:3 * (SIZE[1] + 11) * width], bytes(3 * width))
+
+        # After the drag: the scene seen from elsewhere (a still scene changes no pixel).
+        moved = sum(screen[3 * (y * width + x):3 * (y * width + x) + 3] != orbited[3 * (y * width + x):3 * (y * width + x) + 3]
+                    for y in range(SIZE[1]) for x in range(SIZE[0]))
+        print(f"after the drag: {moved} pixels changed", file=sys.stderr)
+        self.assertGreater(moved, SIZE[0] * SIZE[1] // 20, "the drag did not orbit the camera")
+        self.assertEqual(orbited[3 * (width - 1):3 * width], bytes(3))  # still only the window is drawn
 
 
 if __name__ == "__main__":
