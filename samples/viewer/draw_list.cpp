@@ -91,13 +91,13 @@ void add_scene_lines(DrawList& list, const FrameData& frame, const Scene& scene,
     }
   }
   if (show.force) {
-    // Lengths: the scene's radius at the maximum force or torque.
+    // Lengths: half the scene's radius at the maximum force or torque.
     const proxVec3& f = frame.wrench.force;
     const proxVec3& t = frame.wrench.torque;
     const glm::dvec3 eye = camera.eye();
-    add_arrow(out, frame.reference_point, glm::dvec3(f.x, f.y, f.z) * (r / scene.force().maxForce), eye, 3.0f,
+    add_arrow(out, frame.reference_point, glm::dvec3(f.x, f.y, f.z) * (0.5 * r / scene.force().maxForce), eye, 3.0f,
               kForceColor);
-    add_arrow(out, frame.reference_point, glm::dvec3(t.x, t.y, t.z) * (r / scene.force().maxTorque), eye, 2.0f,
+    add_arrow(out, frame.reference_point, glm::dvec3(t.x, t.y, t.z) * (0.5 * r / scene.force().maxTorque), eye, 2.0f,
               kTorqueColor);
   }
 }
