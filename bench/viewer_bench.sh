@@ -3,8 +3,8 @@
 # frame time at 1280x720, 1x and 4x MSAA, headless, for the bunny scene
 # (path T on the world's threads) and a CAD pair (the 2CylinderEngine's
 # crankcase and cylinder block, 515 strings); then the haptic thread's
-# period with the viewer rendering beside it against `proxima run` on the
-# same scene and threads without it.
+# period with the viewer rendering beside it (lavapipe on every core, then
+# on one) against `proxima run` on the same scene and threads without it.
 # Usage: bench/viewer_bench.sh [BUILD_DIR]   (default build/release)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,6 +28,12 @@ for msaa in 1 4; do
 done
 echo "== haptic thread, viewer rendering beside it (1280x720 4x, path T, 12 s)"
 "$viewer" --headless --frames 100000 --seconds 4 --size 1280x720 --msaa 4 &
+pid=$!
+sleep 12
+kill -INT $pid
+wait $pid || true
+echo "== haptic thread, viewer rendering beside it with lavapipe on one thread (LP_NUM_THREADS=1)"
+LP_NUM_THREADS=1 "$viewer" --headless --frames 100000 --seconds 4 --size 1280x720 --msaa 4 &
 pid=$!
 sleep 12
 kill -INT $pid

@@ -10,8 +10,15 @@ namespace viewer {
 
 namespace {
 
+// The library's message without the function it starts with
+// ("proxWorld_LoadMesh: cannot open 'x.obj'" -> "cannot open 'x.obj'"):
+// the user named a file, not a function.
 void check(proxResult r) {
-  if (r != PROX_SUCCESS) throw SceneError(proxGetLastError());
+  if (r == PROX_SUCCESS) return;
+  std::string message = proxGetLastError();
+  const auto colon = message.find(": ");
+  if (message.rfind("prox", 0) == 0 && colon != std::string::npos) message.erase(0, colon + 2);
+  throw SceneError(message.empty() ? proxResultString(r) : message);
 }
 
 proxPose translation(double x) { return {{x, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}}; }
