@@ -1,6 +1,7 @@
-// The HUD: a text-free panel of bars in the top-left corner (this version
-// has no font; docs/viewer.md says how to read it), drawn by the lines
-// pipeline in pixels.
+// The HUD's figures, and the text-free HUD: a panel of bars in the
+// top-left corner drawn by the lines pipeline in pixels, for builds without
+// ImGui (hud_text.h draws them as text; docs/viewer.md says how to read the
+// bars).
 #pragma once
 
 #include "draw_list.h"
@@ -12,7 +13,9 @@ struct HudState {
   const proxThreadStats* threads = nullptr;  // haptic, local, global; nullptr: the world was stepped
   std::size_t contacts = 0;
   double force = 0.0, max_force = 1.0;  // N
+  double torque = 0.0;                  // N m
   proxMethod method = PROX_METHOD_PRECISE;
+  proxForcePreset preset = PROX_FORCE_PRESET_HARD;
   DeviceKind device = DeviceKind::none;
 };
 

@@ -5,6 +5,9 @@
 // docs/viewer.md says what it shows and how it is tested.
 #include "draw_list.h"
 #include "hud.h"
+#if PROX_VIEWER_TEXT_HUD
+#include "hud_text.h"
+#endif
 #include "image_out.h"
 #include "input.h"
 #include "obj_mesh.h"
@@ -22,6 +25,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -97,17 +101,26 @@ class Viewer {
     lines_.world.clear();
     lines_.screen.clear();
     add_scene_lines(lines_, frame_, *scene_, show_, camera_);
+    std::function<void(VkCommandBuffer)> overlay;
     if (show_.hud) {
       HudState hud;
       hud.frame_seconds = timing_.last();
       hud.threads = frame_.threads ? frame_.thread_stats : nullptr;
       hud.contacts = frame_.contacts.size();
       const proxVec3& f = frame_.wrench.force;
+      const proxVec3& t = frame_.wrench.torque;
       hud.force = std::sqrt(f.x * f.x + f.y * f.y + f.z * f.z);
+      hud.torque = std::sqrt(t.x * t.x + t.y * t.y + t.z * t.z);
       hud.max_force = scene_->force().maxForce;
       hud.method = options_.method;
+      hud.preset = options_.force;
       hud.device = options_.device_kind;
+#if PROX_VIEWER_TEXT_HUD
+      text_hud_->build(hud, extent);
+      overlay = [this](VkCommandBuffer cmd) { text_hud_->record(cmd); };
+#else
       add_hud(lines_, hud);
+#endif
     }
     const double aspect = static_cast<double>(extent.width) / static_cast<double>(extent.height);
     FrameInput in;
@@ -117,6 +130,7 @@ class Viewer {
     in.model_tool = glm::mat4(frame_.model_tool);
     in.meshes = show_.meshes;
     in.lines = &lines_;
+    in.overlay = std::move(overlay);
     return in;
   }
   void write_sidecar_for(const FrameInput& in, VkExtent2D extent, int index) {
@@ -152,6 +166,22 @@ class Viewer {
   FrameData frame_;
   DrawList lines_;
   Timing timing_;
+#if PROX_VIEWER_TEXT_HUD
+  std::unique_ptr<TextHud> text_hud_;
+#endif
+  void attach_hud(VulkanContext& vk, const Renderer& renderer) {
+#if PROX_VIEWER_TEXT_HUD
+    text_hud_ = std::make_unique<TextHud>(vk, renderer.render_pass(), renderer.samples());
+#else
+    (void)vk;
+    (void)renderer;
+#endif
+  }
+  void detach_hud() {
+#if PROX_VIEWER_TEXT_HUD
+    text_hud_.reset();
+#endif
+  }
 };
 
 VkSampleCountFlagBits samples_of(int msaa) { return msaa == 4 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT; }
@@ -163,6 +193,7 @@ int Viewer::run_headless() {
   {
     Renderer renderer(vk, kOffscreenFormat, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, samples_of(options_.msaa));
     renderer.set_meshes(mesh_a_, mesh_tool());
+    attach_hud(vk, renderer);
     OffscreenTarget target(vk, renderer, extent);
     frame_camera(extent);
     for (int i = 0; i < options_.frames && !g_stop; ++i) {
@@ -179,6 +210,7 @@ int Viewer::run_headless() {
         write_sidecar_for(in, extent, i);
       }
     }
+    detach_hud();
   }
   if (!options_.out_dir.empty())
     std::printf("proxima-viewer: wrote %d frame%s to %s\n", static_cast<int>(timing_.seconds.size()),
@@ -220,6 +252,7 @@ int Viewer::run_window() {
     auto renderer = std::make_unique<Renderer>(vk, target.format(), VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
                                                samples_of(options_.msaa));
     renderer->set_meshes(mesh_a_, mesh_tool());
+    attach_hud(vk, *renderer);
     target.create(*renderer, extent);
     frame_camera(target.extent());
 
@@ -279,8 +312,10 @@ int Viewer::run_window() {
       }
     }
     vkDeviceWaitIdle(vk.device());
+    detach_hud();
     renderer.reset();
   } catch (...) {
+    detach_hud();
     vkDestroySurfaceKHR(vk.instance(), surface, nullptr);
     glfwDestroyWindow(window);
     throw;

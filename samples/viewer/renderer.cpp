@@ -316,6 +316,7 @@ void Renderer::record(VkCommandBuffer cmd, VkFramebuffer fb, VkExtent2D extent, 
       vkCmdDraw(cmd, 6, static_cast<uint32_t>(screen / 2), 0, static_cast<uint32_t>(world / 2));
     }
   }
+  if (in.overlay) in.overlay(cmd);
   vkCmdEndRenderPass(cmd);
 }
 

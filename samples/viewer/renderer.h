@@ -10,6 +10,8 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
+
 namespace viewer {
 
 struct FrameInput {
@@ -17,6 +19,7 @@ struct FrameInput {
   glm::mat4 model_a{1.0f}, model_tool{1.0f};
   bool meshes = true;
   const DrawList* lines = nullptr;
+  std::function<void(VkCommandBuffer)> overlay;  // recorded last in the render pass (the text HUD)
 };
 
 // Lines on a surface are pulled this much towards the eye (NDC depth):

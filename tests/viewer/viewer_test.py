@@ -122,6 +122,7 @@ class ViewerTest(unittest.TestCase):
         cls.near_no_strings = render(d, "near-no-strings", NEAR, "meshes,polylines,force,hud,grid", *near)
         cls.side_all = render(d, "side-all", SIDE, "all", *near)
         cls.side_no_strings = render(d, "side-no-strings", SIDE, "meshes,polylines,force,hud,grid", *near)
+        cls.near_hud = render(d, "near-hud", NEAR, "hud", *near)
         cls.near_meshes = render(d, "near-meshes", NEAR, "meshes", *near)
         cls.near_strings_4x = render(d, "near-strings-4x", NEAR, "strings", "--cutoff", "0.01", "--msaa", "4")
         cls.near_none_4x = render(d, "near-none-4x", NEAR, "none", "--cutoff", "0.01", "--msaa", "4")
@@ -240,6 +241,15 @@ class ViewerTest(unittest.TestCase):
         self.assertGreater(sidecar["force"][2], 0.0)
         for c in sidecar["contacts"]:
             self.assertAlmostEqual(math.dist(c["point_tool"], c["point_other"]), c["distance"], delta=1e-9)
+
+    def test_hud_is_a_panel_in_the_top_left_corner(self):
+        image, _ = self.near_hud
+        diff = changed(image, self.near_none[0])
+        self.assertGreater(len(diff), 2000, "no HUD")
+        self.assertLess(max(x for x, _ in diff), image.width * 3 // 4)
+        self.assertLess(max(y for _, y in diff), image.height * 3 // 4)
+        self.assertLess(min(x for x, _ in diff), 20)
+        self.assertLess(min(y for _, y in diff), 20)
 
     def test_meshes_cover_where_they_project(self):
         image, sidecar = self.near_meshes
