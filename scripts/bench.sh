@@ -30,7 +30,7 @@ cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DPROX_WARNINGS_
   -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" \
   -DPROX_BUILD_BENCHMARKS=ON -DPROX_BENCH_WITH_FCL=ON -DPROX_BENCH_WITH_COAL=ON \
   -DCMAKE_PREFIX_PATH="$PWD/$coal_prefix" >/dev/null
-cmake --build build/release --target proxima_bench -j "$jobs"
+cmake --build build/release --target proxima_bench proxima_timing_bench -j "$jobs"
 
 build/bench-venv/bin/python bench/decimate.py "$(assets_dir)/bunny.obj" build/bench-meshes
 
@@ -44,3 +44,8 @@ echo "== proxima_bench --scene all --meshes build/bench-meshes --out build/bench
 build/release/bench/proxima_bench --scene all --meshes build/bench-meshes --out build/bench-results "$@" |
   tee build/bench-results.txt
 build/bench-venv/bin/python bench/plot.py build/bench-results docs/benchmarks
+# The haptic loop's timing, each way of waiting with and without real-time
+# priority, search idle and busy (docs/benchmarks.md, "Keeping the beat").
+echo "== proxima_timing_bench --out build/bench-results"
+build/release/bench/proxima_timing_bench --out build/bench-results | tee build/bench-timing.txt
+build/bench-venv/bin/python bench/plot_timing.py build/bench-results docs/benchmarks

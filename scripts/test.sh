@@ -28,9 +28,10 @@ configure build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=address,u
 cmake --build build/asan -j "$jobs"
 ctest --test-dir build/asan --output-on-failure -j "$jobs"
 
-echo "== thread sanitizer (the tests labelled 'threads': handoffs, runtime threads, C API threads)"
+echo "== thread sanitizer (the tests labelled 'threads': handoffs, runtime threads, C API threads and devices)"
 configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=thread -DPROX_BUILD_SAMPLES=OFF
-cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests
+cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests \
+  proxima_capi_stream_tests proxima_capi_timing_tests
 ctest --test-dir build/tsan --output-on-failure -L threads
 
 echo "== release"
@@ -48,4 +49,5 @@ else
   echo "   fast-simplification could not be installed: scaling-2k and scaling-7k are skipped"
 fi
 build/release/bench/proxima_bench --scene all --poses 5 --meshes build/bench-meshes --out build/bench-smoke >/dev/null
+build/release/bench/proxima_timing_bench --seconds 0.1 --out build/bench-smoke >/dev/null
 ctest --test-dir build/release --output-on-failure -j "$jobs"

@@ -21,8 +21,8 @@ _Static_assert(sizeof(proxDeviceDef) == 32, "proxDeviceDef");
 _Static_assert(sizeof(proxScriptedDeviceId) == 16, "proxScriptedDeviceId");
 _Static_assert(sizeof(proxScriptedDeviceDef) == 32, "proxScriptedDeviceDef");
 _Static_assert(sizeof(proxScriptedDeviceRecord) == 104, "proxScriptedDeviceRecord");
-_Static_assert(sizeof(proxThreadsDef) == 80, "proxThreadsDef");
-_Static_assert(sizeof(proxThreadStats) == 88, "proxThreadStats");
+_Static_assert(sizeof(proxThreadsDef) == 104, "proxThreadsDef");
+_Static_assert(sizeof(proxThreadStats) == 120, "proxThreadStats");
 _Static_assert(sizeof(proxSafetyStats) == 48, "proxSafetyStats");
 _Static_assert(sizeof(proxThread) == 4, "enums are 32-bit");
 _Static_assert(sizeof(proxResult) == 4, "enums are 32-bit");
@@ -32,6 +32,11 @@ _Static_assert(sizeof(proxMeshStats) == 48, "proxMeshStats");
 _Static_assert(sizeof(proxSearchStats) == 88, "proxSearchStats");
 _Static_assert(sizeof(proxTrackStats) == 48, "proxTrackStats");
 _Static_assert(sizeof(proxIntersectionStats) == 40, "proxIntersectionStats");
+_Static_assert(sizeof(proxStreamDeviceId) == 16, "proxStreamDeviceId");
+_Static_assert(sizeof(proxStreamDeviceDef) == 40, "proxStreamDeviceDef");
+_Static_assert(sizeof(proxStreamDeviceStats) == 80, "proxStreamDeviceStats");
+_Static_assert(sizeof(proxStreamMode) == 4, "enums are 32-bit");
+_Static_assert(sizeof(proxHapticTiming) == 4, "enums are 32-bit");
 
 int main(void) {
   const proxVersion v = proxGetVersion();

@@ -214,7 +214,7 @@ TEST_F(Threads, StartAndStopAreValidatedAndFreezeTheScene) {
   EXPECT_GT(stats.periodMax, 0.0);
   EXPECT_LE(stats.periodP50, stats.periodP99);
   EXPECT_LE(stats.periodP99, stats.periodMax);
-  EXPECT_EQ(stats.pinnedCore, -1);
+  EXPECT_EQ(stats.pinnedCore, def.hapticCore);
   EXPECT_FAILS(proxWorld_GetThreadStats(world, static_cast<proxThread>(7), &stats),
                PROX_ERROR_INVALID_ARGUMENT, "proxThread");
   EXPECT_FAILS(proxWorld_GetThreadStats(world, PROX_THREAD_GLOBAL, nullptr), PROX_ERROR_INVALID_ARGUMENT,

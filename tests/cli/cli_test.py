@@ -178,6 +178,58 @@ class CliTest(unittest.TestCase):
         last = [l.split() for l in r.stdout.splitlines() if l.strip() and l.split()[0].replace(".", "").isdigit()][-1]
         self.assertGreater(float(last[3]), 0.0)
 
+    def test_run_drives_the_threads_with_the_streamed_device(self):
+        # The same descent, fed to a streamed device at 90 Hz by a second
+        # thread of the tool, as an engine's frame loop would feed it.
+        poses = write(self.dir.name, "descent.txt", "0.1 0.1 0.003 0 1 0 0\n0.1 0.1 0.001 0 1 0 0\n")
+        json_path = os.path.join(self.dir.name, "run.json")
+        r = run("run", self.tri, self.tri, "--device", "stream", "--poses", poses, "--seconds", "0.3",
+                "--hold", "0.3", "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("stream:", r.stdout)
+        with open(json_path) as f:
+            report = json.load(f)
+        self.assertEqual(report["device"]["kind"], "stream")
+        stream = report["stream"]
+        self.assertEqual(stream["mode"], "interpolate")
+        # 0.6 s at 90 Hz, give or take the scheduler of a busy machine.
+        self.assertGreater(stream["samples_pushed"], 20)
+        self.assertLessEqual(stream["samples_pushed"], 60)
+        self.assertEqual(stream["samples_refused"], 0)
+        self.assertGreater(stream["reads"], 100, "the haptic loop reads at 1 kHz, many times per sample")
+        self.assertGreater(stream["mean_sample_interval_ms"], 9.0)
+        device = report["device"]
+        self.assertTrue(device["all_finite"])
+        self.assertGreater(device["max_force"], 0.0, "a millimetre from A, the tool is pushed back")
+        self.assertLessEqual(device["max_force"], 3.0 + 1e-12)
+        last = [l.split() for l in r.stdout.splitlines() if l.strip() and l.split()[0].replace(".", "").isdigit()][-1]
+        self.assertGreater(float(last[3]), 0.0)
+
+    def test_run_takes_the_timing_and_real_time_options(self):
+        json_path = os.path.join(self.dir.name, "run.json")
+        r = run("run", self.tri, self.tri, "--seconds", "0.2", "--hold", "0", "--haptic-timing", "spin",
+                "--realtime", "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("haptic timing: spin", r.stdout)
+        with open(json_path) as f:
+            report = json.load(f)
+        self.assertEqual(report["haptic_timing"], "spin")
+        haptic = report["threads"]["haptic"]
+        # Granted (80) where the system allows it; else refused with a reason, and the run goes on.
+        if haptic["realtime_priority"] == 0:
+            self.assertNotEqual(haptic["realtime_error"], 0)
+            self.assertIn("refused", r.stdout)
+        else:
+            self.assertEqual(haptic["realtime_priority"], 80)
+            self.assertEqual(report["threads"]["local"]["realtime_priority"], 70)
+        self.assertGreater(haptic["updates"], 50)
+        self.assertLessEqual(haptic["period_p99_ms"], haptic["period_p999_ms"])
+        r = run("run", self.tri, self.tri, "--seconds", "0.1", "--hold", "0", "--haptic-timing", "sleep",
+                "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        with open(json_path) as f:
+            self.assertEqual(json.load(f)["haptic_timing"], "sleep")
+
     def test_errors_are_clear_and_exit_non_zero(self):
         cases = [
             (("info", os.path.join(self.dir.name, "missing.obj")), "missing.obj"),
@@ -202,6 +254,11 @@ class CliTest(unittest.TestCase):
             (("run", "--hold", "-1"), "--hold"),
             (("run", "--method", "reference"), "real time"),
             (("run", "--wobble"), "unknown option"),
+            (("run", "--device", "joystick"), "--device"),
+            (("run", "--haptic-timing", "fast"), "--haptic-timing"),
+            (("run", "--spin-margin", "0.5"), "spin margin"),
+            (("run", "--device", "stream", "--stream-rate", "0"), "--stream-rate"),
+            (("run", "--device", "stream", "--stream-mode", "guess"), "--stream-mode"),
         ]
         for args, expected in cases:
             with self.subTest(args=args):

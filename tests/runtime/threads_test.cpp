@@ -6,6 +6,7 @@
 // never allocate. At rest the threads must agree with the deterministic step.
 #include "runtime/threads.h"
 #include "runtime/scripted_device.h"
+#include "runtime/stream_device.h"
 #include "runtime/world.h"
 #include "support/scenes.h"
 
@@ -56,6 +57,7 @@ using Clock = std::chrono::steady_clock;
 struct FaultyDevice {
   enum Fault { None = 0, NaNPose = 1, NoPose = 2, Teleport = 3 };
   explicit FaultyDevice(ScriptedDevice& scripted) : inner(scripted.device()) {}
+  explicit FaultyDevice(const Device& device) : inner(device) {}
 
   Device device() { return {&FaultyDevice::read, &FaultyDevice::write, this, nullptr}; }
 
@@ -260,9 +262,15 @@ TEST_F(ThreadsTest, NaNAndMissingPosesFadeOutAndRecover) {
 TEST_F(ThreadsTest, TeleportingPoseDoesNotSpike) {
   FaultyDevice* device = nullptr;
   start_and_settle(device);
+  // Local tracking held, so that no snapshot can catch up with the jump
+  // (on a loaded machine it otherwise might, between the haptic loop's pose
+  // and its force): the contacts are fresh but tracked 20 cm away.
+  Threads& threads = *world_->threads();
+  threads.stall(Role::Local, true);
   device->fault.store(FaultyDevice::Teleport);
+  EXPECT_TRUE(wait_until([&] { return threads.haptic_counters().untrusted_ticks > 0; }));
   ASSERT_TRUE(faded_out()) << "contacts tracked 20 cm away were rendered";
-  EXPECT_GT(world_->threads()->haptic_counters().untrusted_ticks, 0u);
+  threads.stall(Role::Local, false);
   device->fault.store(FaultyDevice::None);
   EXPECT_TRUE(settled());
   expect_safe_output();
@@ -301,6 +309,58 @@ TEST_F(ThreadsTest, ASmallSnapshotKeepsTheClosestContacts) {
     return contacts.size() == expected_.lmds.size();
   })) << "the game thread sees every contact, not only the one the haptic loop gets";
   expect_safe_output();
+}
+
+// The spinning wait (and a real-time priority, where the system grants it)
+// changes how the loop waits, not what it does: the same answer at rest,
+// and still no allocation.
+TEST_F(ThreadsTest, SpinningRealTimeLoopAgreesAndAllocatesNothing) {
+  settings_.haptic_timing = HapticTiming::Spin;
+  settings_.realtime_priority[0] = 10;
+  FaultyDevice* device = nullptr;
+  start_and_settle(device);
+  EXPECT_EQ(world_->threads()->haptic_timing(), HapticTiming::Spin);
+  EXPECT_GT(world_->threads()->loop_summary(Role::Haptic).updates, 100u);
+  expect_safe_output();
+}
+
+// An engine's thread pushes poses at 90 Hz through the streamed device: the
+// tool approaches and comes to rest at the deterministic step's wrench, and
+// neither the haptic thread nor the pushing thread allocates.
+TEST_F(ThreadsTest, StreamedDeviceDrivesTheToolWithoutAllocating) {
+  StreamSettings stream_settings;
+  stream_settings.mode = StreamMode::Interpolate;
+  StreamDevice stream(stream_settings);
+  FaultyDevice marked(stream.device());
+  world_->set_device(tool_, marked.device());
+  const ScriptedDevice path({ScriptedPose::of(far_), ScriptedPose::of(near_)}, 0.5, false);
+  std::atomic<bool> stop{false};
+  std::thread engine([&] {
+    t_on_haptic_thread = true;  // counted like the haptic thread: pushing must not allocate either
+    const double start = stream_clock();
+    while (!stop.load()) {
+      const double now = stream_clock();
+      const ScriptedPose p = path.pose_at(now - start);
+      StreamSample sample;
+      sample.time = now;
+      for (int k = 0; k < 3; ++k) sample.position[k] = p.position[k];
+      for (int k = 0; k < 4; ++k) sample.rotation[k] = p.rotation[k];
+      stream.push(sample);
+      std::this_thread::sleep_for(std::chrono::microseconds(11111));
+    }
+  });
+  Status status;
+  ASSERT_TRUE(world_->start_threads(settings_, status)) << status.message();
+  const bool rested = wait_until([&] { return at_rest_force(); });
+  stop.store(true);
+  engine.join();
+  EXPECT_TRUE(rested) << "the streamed tool never reached the deterministic answer at rest";
+  const StreamStats st = stream.stats();
+  EXPECT_GT(st.pushed, 20u);
+  EXPECT_GT(st.reads, 100u);
+  const DeviceWrench w = stream.wrench();
+  EXPECT_TRUE(std::isfinite(w.force[0] + w.force[1] + w.force[2]));
+  EXPECT_EQ(g_haptic_allocations.load(), 0) << "the haptic thread or the pusher allocated";
 }
 
 TEST_F(ThreadsTest, BadSettingsAreRefusedByName) {

@@ -369,15 +369,103 @@ typedef struct proxScriptedDeviceRecord {
 } proxScriptedDeviceRecord;
 
 /* Game thread. */
-PROX_API proxResult proxScriptedDevice_GetRecord(proxScriptedDeviceId device, proxScriptedDeviceRecord* record);
+PROX_API proxResult proxScriptedDevice_GetRecord(proxScriptedDeviceId device,
+                                                 proxScriptedDeviceRecord* record);
+
+/* ---- the streamed device ----------------------------------------------------------
+ * The device for engines, bindings and XR (docs/devices.md): the application
+ * pushes timestamped tool poses from a thread of its own at its own rate (a
+ * frame's 60-120 Hz), the haptic loop renders the pose at its 1 kHz from the
+ * latest samples, and the wrench it renders is read back from any thread
+ * (for a rumble or an XR vibration the application drives itself). Pushing
+ * and reading never lock, allocate or wait, and the haptic loop never waits
+ * on the pusher. A streamed device lives as long as its world; attach it to
+ * one tool with proxBody_SetDevice. */
+typedef struct proxStreamDeviceId {
+  uint32_t index1; /* index + 1; 0 is null */
+  uint32_t reserved;
+  proxWorldId world;
+} proxStreamDeviceId;
+
+typedef enum proxStreamMode {
+  PROX_STREAM_HOLD = 0, /* the newest sample's pose */
+  PROX_STREAM_INTERPOLATE =
+      1, /* the pose `delay` ago, between the samples around it; holds past the newest */
+  PROX_STREAM_EXTRAPOLATE = 2, /* the pose now: between samples, or predicted from the newest two (at most
+                                  maxExtrapolation past the newest, then held) */
+  PROX_STREAM_MODE_FORCE32 = 0x7FFFFFFF
+} proxStreamMode;
+
+typedef struct proxStreamDeviceDef {
+  proxStreamMode mode; /* default PROX_STREAM_INTERPOLATE */
+  double delay;        /* s, >= 0: INTERPOLATE's latency (default 1/90: one 90 Hz frame) */
+  double
+      maxExtrapolation; /* s, >= 0: EXTRAPOLATE's furthest prediction past the newest sample (default 0.02) */
+  double staleAfter; /* s, > 0: nothing pushed for this long: no pose, the force fades out (default 0.05) */
+  int32_t internalValue;
+  int32_t reserved;
+} proxStreamDeviceDef;
+
+/* What a streamed device saw. Counts since it was created. */
+typedef struct proxStreamDeviceStats {
+  uint64_t samplesPushed;  /* accepted */
+  uint64_t samplesDropped; /* no newer than the newest accepted: late (out of order) or duplicate */
+  uint64_t samplesRefused; /* invalid (non-finite, zero quaternion, bad time): PROX_ERROR_INVALID_ARGUMENT */
+  uint64_t reads;          /* haptic ticks that asked for the pose */
+  uint64_t staleTicks;     /* ... and got none: nothing pushed yet, or not for staleAfter */
+  uint64_t extrapolatedTicks; /* ... rendered past the newest sample (EXTRAPOLATE: predicted; else held) */
+  double meanSampleInterval;  /* s, between accepted samples' times */
+  double maxSampleInterval;   /* s */
+  double maxExtrapolation;    /* s: the furthest a rendered pose was predicted past the newest sample */
+  double lastSampleAge;       /* s: now minus the newest sample's time, at the last read */
+} proxStreamDeviceStats;
+
+/* Seconds on the steady, monotonic clock proxStreamDevice_PushPose's times
+ * are on (CLOCK_MONOTONIC on Linux; std::chrono::steady_clock). Any thread. */
+PROX_API double proxGetTime(void);
+
+PROX_API proxStreamDeviceDef proxDefaultStreamDeviceDef(void);
+/* Game thread. At most 1024 streamed devices exist at once in the process
+ * (PROX_ERROR_CAPACITY beyond). */
+PROX_API proxResult proxWorld_CreateStreamDevice(proxWorldId world, const proxStreamDeviceDef* def,
+                                                 proxStreamDeviceId* device);
+/* Hands the device the tool's world pose at `timeSeconds` (on proxGetTime's
+ * clock; when the pose was or will be true). Any thread, but one at a time:
+ * a second thread pushing at the same moment gets PROX_ERROR_WRONG_THREAD.
+ * Lock-free and allocation-free. A sample no newer than the newest accepted
+ * is dropped (counted, not an error); a non-finite pose, a zero quaternion,
+ * or a NaN, infinite or negative time is refused with
+ * PROX_ERROR_INVALID_ARGUMENT and never reaches the haptic loop. Other
+ * quaternions are normalised. PROX_ERROR_INVALID_HANDLE once the world is
+ * destroyed. */
+PROX_API proxResult proxStreamDevice_PushPose(proxStreamDeviceId device, const proxPose* pose,
+                                              double timeSeconds);
+/* The wrench the haptic loop last handed the device (zero before the
+ * first), never torn. Any thread; lock-free. */
+PROX_API proxResult proxStreamDevice_GetWrench(proxStreamDeviceId device, proxWrench* wrench);
+/* The def that attaches it with proxBody_SetDevice. Game thread. */
+PROX_API proxResult proxStreamDevice_GetDeviceDef(proxStreamDeviceId device, proxDeviceDef* def);
+/* Game thread. */
+PROX_API proxResult proxStreamDevice_GetStats(proxStreamDeviceId device, proxStreamDeviceStats* stats);
 
 /* ---- threads --------------------------------------------------------------------- */
+
+/* How the haptic loop waits for its next period (docs/threading.md,
+ * "Keeping the beat"). Both wait for an absolute deadline, so they never drift. */
+typedef enum proxHapticTiming {
+  PROX_TIMING_AUTO = 0,  /* SPIN when the haptic thread runs real-time or on a core of its own, else SLEEP */
+  PROX_TIMING_SPIN = 1,  /* sleep to spinMargin before the deadline, then spin to it: on time, costs CPU */
+  PROX_TIMING_SLEEP = 2, /* sleep to the deadline: no CPU between ticks, late by the OS's wake-up */
+  PROX_TIMING_FORCE32 = 0x7FFFFFFF
+} proxHapticTiming;
 
 typedef struct proxThreadsDef {
   double hapticRate; /* Hz: the haptic loop (default 1000) */
   double localRate;  /* Hz: local tracking (default 1000; 0: back to back) */
   double globalRate; /* Hz: global search (default 0: back to back, idle while nothing moves) */
-  /* The core each thread is pinned to; -1 (the default): not pinned. */
+  /* The core each thread is pinned to; -1: not pinned. The default, where
+   * the process may use at least four cores: the haptic and local threads
+   * on the last two, one each, the global search unpinned; else none. */
   int32_t hapticCore, localCore, globalCore;
   int32_t maxContacts;  /* per tool handed to the haptic loop, the closest first (default 1024) */
   double staleAfter;    /* s: contacts older than this fade the force out (default 0.05) */
@@ -387,6 +475,17 @@ typedef struct proxThreadsDef {
    * one are not rendered (a teleport; the force fades out until tracking
    * catches up). 0 (the default): the world's cutoff. */
   double trustDistance;
+  proxHapticTiming hapticTiming; /* default PROX_TIMING_AUTO */
+  /* SCHED_FIFO priority (1-99) asked for the haptic thread; 0 (the default):
+   * none. Needs root, CAP_SYS_NICE or an RLIMIT_RTPRIO of at least it; a
+   * refusal is reported in proxThreadStats, never an error. */
+  int32_t hapticPriority;
+  double spinMargin;     /* s, in [0, the haptic period]: PROX_TIMING_SPIN's spin (default 0.0002) */
+  int32_t localPriority; /* the same for the local tracking thread (default 0) */
+  /* Lock the process's memory (mlockall(MCL_CURRENT)) once the threads
+   * run, so no page the haptic loop touches is paged out. Process-wide and
+   * never undone by Proxima; reported in proxThreadStats. Default 0. */
+  proxBool lockMemory;
   int32_t internalValue;
   int32_t reserved;
 } proxThreadsDef;
@@ -415,13 +514,20 @@ typedef enum proxThread {
  * the whole run), from the running threads or the last ones stopped. */
 typedef struct proxThreadStats {
   proxBool running;
-  int32_t pinnedCore;    /* -1: not pinned */
-  double targetRate;     /* Hz; 0: back to back */
-  double achievedRate;   /* Hz */
+  int32_t pinnedCore;                     /* -1: not pinned */
+  double targetRate;                      /* Hz; 0: back to back */
+  double achievedRate;                    /* Hz */
   double periodP50, periodP99, periodMax; /* s, iteration start to start */
   double updateP50, updateP99, updateMax; /* s of work per iteration */
   uint64_t updates;
-  uint64_t overruns; /* iterations that missed the next period's start */
+  uint64_t overruns;        /* iterations that missed the next period's start */
+  double periodP999;        /* s: the 99.9th percentile of the period */
+  int32_t realtimePriority; /* the SCHED_FIFO priority granted; 0: none asked, or refused */
+  int32_t realtimeError;    /* the errno that refused it (1, EPERM: no privilege); 0 */
+  proxBool memoryLocked;    /* haptic thread's stats: lockMemory was granted */
+  int32_t memoryLockError;  /* ... or the errno that refused it (ENOMEM, EPERM: RLIMIT_MEMLOCK); 0 */
+  proxHapticTiming timing;  /* haptic thread's stats: SPIN or SLEEP, as AUTO resolved */
+  int32_t reserved;
 } proxThreadStats;
 
 /* Game thread. */

@@ -60,12 +60,24 @@ LoopSummary LoopStats::summary() const {
   }
   std::sort(periods.begin(), periods.end());
   std::sort(updates.begin(), updates.end());
-  s.period_p50 = at(periods, 0.5), s.period_p99 = at(periods, 0.99);
+  s.period_p50 = at(periods, 0.5), s.period_p99 = at(periods, 0.99), s.period_p999 = at(periods, 0.999);
   s.update_p50 = at(updates, 0.5), s.update_p99 = at(updates, 0.99);
   double total = 0.0;
   for (double p : periods) total += p;
   s.achieved_rate = total > 0.0 ? double(periods.size()) / total : 0.0;
   return s;
+}
+
+std::vector<double> LoopStats::periods() const {
+  const std::uint64_t count = count_.load(std::memory_order_acquire);
+  const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(count, kWindow));
+  std::vector<double> out;
+  out.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double p = periods_[i].load(std::memory_order_relaxed);
+    if (p > 0.0) out.push_back(p);
+  }
+  return out;
 }
 
 }  // namespace prox::runtime

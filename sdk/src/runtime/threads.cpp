@@ -9,9 +9,16 @@
 #include <string>
 #include <system_error>
 
+#include <cerrno>
+
 #if defined(__linux__)
 #include <pthread.h>
 #include <sched.h>
+#include <sys/mman.h>
+#include <time.h>
+#endif
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
 #endif
 
 namespace prox::runtime {
@@ -43,7 +50,29 @@ void count(std::atomic<std::uint64_t>& counter, std::uint64_t n = 1) {
   counter.fetch_add(n, std::memory_order_relaxed);
 }
 
+// A hint to the core that this is a spin-wait (it saves power and frees the
+// sibling hyper-thread).
+inline void cpu_relax() {
+#if defined(__x86_64__) || defined(__i386__)
+  _mm_pause();
+#elif defined(__aarch64__)
+  asm volatile("yield");
+#endif
+}
+
 }  // namespace
+
+void default_cores(int cores[3]) {
+  cores[0] = cores[1] = cores[2] = -1;
+#if defined(__linux__)
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) != 0 || CPU_COUNT(&set) < 4) return;
+  int found = 0;
+  for (int c = CPU_SETSIZE - 1; c >= 0 && found < 2; --c)
+    if (CPU_ISSET(c, &set)) cores[found++] = c;  // haptic on the last allowed core, local on the one before
+#endif
+}
 
 Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), settings_(settings) {
   epoch_ = Clock::now();
@@ -104,6 +133,19 @@ bool Threads::start(Status& status) {
     return bad("maximum contacts per tool must be in [1, 1048576] (it is " + std::to_string(s.max_contacts) +
                ")");
   if (s.trust_distance == 0.0) settings_.trust_distance = world_.settings_.cutoff;
+  const double haptic_period = 1.0 / s.haptic_rate;
+  if (s.haptic_timing != HapticTiming::Auto && s.haptic_timing != HapticTiming::Sleep &&
+      s.haptic_timing != HapticTiming::Spin)
+    return bad("haptic timing is not auto, sleep or spin");
+  if (!(finite(s.spin_margin) && s.spin_margin >= 0.0 && s.spin_margin <= haptic_period))
+    return bad("spin margin must be in [0, the haptic period " + std::to_string(haptic_period) +
+               "] s (it is " + std::to_string(s.spin_margin) + ")");
+  const char* prioritised[2] = {"haptic", "local"};
+  for (int r = 0; r < 2; ++r)
+    if (s.realtime_priority[r] < 0 || s.realtime_priority[r] > 99)
+      return bad(std::string(prioritised[r]) +
+                 " thread's real-time priority must be 0 (none) or in [1, 99] (it is " +
+                 std::to_string(s.realtime_priority[r]) + ")");
   const int cores = static_cast<int>(std::thread::hardware_concurrency());
   const char* names[3] = {"haptic", "local", "global"};
   for (int r = 0; r < 3; ++r)
@@ -114,6 +156,7 @@ bool Threads::start(Status& status) {
   loop_stats_[int(Role::Local)].reset(s.local_rate);
   loop_stats_[int(Role::Global)].reset(s.global_rate);
   stop_.store(false);
+  for (int r = 0; r < 3; ++r) priority_[r].store(0), priority_error_[r].store(0);
   try {
     threads_[int(Role::Global)] = std::thread([this] { global_main(); });
     threads_[int(Role::Local)] = std::thread([this] { local_main(); });
@@ -127,6 +170,16 @@ bool Threads::start(Status& status) {
     return false;
   }
   started_ = true;
+  if (s.lock_memory) {
+#if defined(__linux__)
+    // Now, with the threads' stacks and the snapshots' storage mapped.
+    const bool locked = mlockall(MCL_CURRENT) == 0;
+    memory_locked_.store(locked);
+    memory_lock_error_.store(locked ? 0 : errno);
+#else
+    memory_lock_error_.store(ENOSYS);
+#endif
+  }
   return true;
 }
 
@@ -141,15 +194,79 @@ void Threads::stop() {
 
 double Threads::now() const { return std::chrono::duration<double>(Clock::now() - epoch_).count(); }
 
-void Threads::pin(Role role) {
-  const int core = settings_.cores[int(role)];
-  if (core < 0) return;
+void Threads::configure(Role role) {
+  const int r = int(role);
+  const int core = settings_.cores[r];
+  const int priority = role == Role::Global ? 0 : settings_.realtime_priority[r];
 #if defined(__linux__)
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  CPU_SET(core, &set);
-  if (pthread_setaffinity_np(pthread_self(), sizeof set, &set) == 0) pinned_[int(role)].store(core);
+  if (core >= 0) {
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    CPU_SET(core, &set);
+    if (pthread_setaffinity_np(pthread_self(), sizeof set, &set) == 0) pinned_[r].store(core);
+  }
+  if (priority > 0) {
+    sched_param param{};
+    param.sched_priority = priority;
+    const int error = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param);
+    priority_[r].store(error == 0 ? priority : 0);
+    priority_error_[r].store(error);
+  }
+#else
+  (void)core;
+  if (priority > 0) priority_error_[r].store(ENOSYS);
 #endif
+  if (role == Role::Haptic) {
+    HapticTiming timing = settings_.haptic_timing;
+    if (timing == HapticTiming::Auto) {
+      // A core of its own: pinned, and no other thread of ours pinned there.
+      const bool own_core = pinned_[r].load() >= 0 && settings_.cores[int(Role::Local)] != core &&
+                            settings_.cores[int(Role::Global)] != core;
+      timing = priority_[r].load() > 0 || own_core ? HapticTiming::Spin : HapticTiming::Sleep;
+    }
+    timing_.store(timing);
+  }
+}
+
+double Threads::cpu_seconds(Role role) const {
+#if defined(__linux__)
+  std::thread& t = const_cast<std::thread&>(threads_[int(role)]);
+  clockid_t clock;
+  timespec ts{};
+  if (!t.joinable() || pthread_getcpuclockid(t.native_handle(), &clock) != 0 ||
+      clock_gettime(clock, &ts) != 0)
+    return -1.0;
+  return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
+#else
+  (void)role;
+  return -1.0;
+#endif
+}
+
+ThreadGrant Threads::grant(Role role) const {
+  const int r = int(role);
+  return {pinned_[r].load(std::memory_order_relaxed), priority_[r].load(std::memory_order_relaxed),
+          priority_error_[r].load(std::memory_order_relaxed)};
+}
+
+void Threads::wait_until(Role role, double deadline) const {
+  const bool spin = role == Role::Haptic && timing_.load(std::memory_order_relaxed) == HapticTiming::Spin;
+  const double wake = spin ? deadline - settings_.spin_margin : deadline;
+#if defined(__linux__)
+  // An absolute sleep on CLOCK_MONOTONIC (steady_clock's), so neither a
+  // late wake-up nor a signal makes the loop drift.
+  const auto at = epoch_.time_since_epoch() +
+                  std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wake));
+  const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(at).count();
+  timespec ts{static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
+  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
+  }
+#else
+  std::this_thread::sleep_until(
+      epoch_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wake)));
+#endif
+  if (spin)
+    while (now() < deadline) cpu_relax();
 }
 
 bool Threads::wait_while_stalled(Role role) {
@@ -169,15 +286,13 @@ void Threads::pace(Role role, double period, double start, double& previous_star
   }
   loop_stats_[int(role)].record(previous_start < 0.0 ? 0.0 : start - previous_start, end - start, overrun);
   previous_start = start;
-  if (period > 0.0)
-    std::this_thread::sleep_until(
-        epoch_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(deadline)));
+  if (period > 0.0) wait_until(role, deadline);
 }
 
 // ---- haptic -----------------------------------------------------------------
 
 void Threads::haptic_main() {
-  pin(Role::Haptic);
+  configure(Role::Haptic);
   const double period = 1.0 / settings_.haptic_rate;
   double deadline = now(), previous = -1.0, last_tick = now();
   while (!stop_.load(std::memory_order_relaxed)) {
@@ -250,7 +365,7 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
 // ---- local tracking ----------------------------------------------------------------
 
 void Threads::local_main() {
-  pin(Role::Local);
+  configure(Role::Local);
   const double period = settings_.local_rate > 0.0 ? 1.0 / settings_.local_rate : 0.0;
   double deadline = now(), previous = -1.0;
   std::vector<const LmdPair*> scratch;
@@ -339,7 +454,7 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
 // ---- global search -------------------------------------------------------------
 
 void Threads::global_main() {
-  pin(Role::Global);
+  configure(Role::Global);
   const double period = settings_.global_rate > 0.0 ? 1.0 / settings_.global_rate : 0.0;
   double deadline = now(), previous = -1.0;
   PairMap pairs;

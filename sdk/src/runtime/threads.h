@@ -32,6 +32,13 @@ namespace prox::runtime {
 
 enum class Role { Haptic = 0, Local = 1, Global = 2 };
 
+// How the haptic loop waits for its next period's absolute deadline.
+enum class HapticTiming {
+  Auto,   // Spin when the haptic thread got a real-time priority or a core of its own, else Sleep
+  Spin,   // sleep to spin_margin before it, then spin on the clock: on time, at a cost in CPU
+  Sleep,  // sleep to the deadline: no CPU between ticks, late by the scheduler's wake-up
+};
+
 struct ThreadSettings {
   double haptic_rate = 1000.0;  // Hz (> 0)
   double local_rate = 1000.0;   // Hz; 0: back to back
@@ -46,6 +53,29 @@ struct ThreadSettings {
   // trusted: the force fades out until tracking catches up.
   double trust_distance = 0.0;
   int max_contacts = 1024;  // per tool handed to the haptic loop (the closest ones)
+  // Spinning without a real-time priority or a core of its own makes the
+  // loop later, not earlier, on a busy machine: the scheduler takes the
+  // spinning thread off its core (docs/threading.md).
+  HapticTiming haptic_timing = HapticTiming::Auto;
+  double spin_margin = 0.0002;  // s: Spin's sleep ends this long before the deadline
+  // SCHED_FIFO priority (1-99) asked for the haptic and local threads; 0:
+  // none. Refused (no privilege) is reported in the stats, never fatal.
+  int realtime_priority[2] = {0, 0};
+  // mlockall(MCL_CURRENT) once the threads run, so no page the haptic loop
+  // touches can be paged out (process-wide; reported, never fatal).
+  bool lock_memory = false;
+};
+
+// Cores for the haptic and local threads on a machine with at least four
+// the process may use: the last two, one each (the paper's layout), and the
+// global search unpinned; -1 for all three below that.
+void default_cores(int cores[3]);
+
+// What the system granted a thread.
+struct ThreadGrant {
+  int pinned_core = -1;
+  int realtime_priority = 0;  // SCHED_FIFO priority granted; 0: none asked or refused
+  int realtime_error = 0;     // errno of a refused request (EPERM: no privilege)
 };
 
 // Counters of the haptic loop's safety decisions, over all tools.
@@ -82,6 +112,17 @@ class Threads {
   LoopSummary loop_summary(Role role) const { return loop_stats_[int(role)].summary(); }
   HapticCounters haptic_counters() const;
   int pinned_core(Role role) const { return pinned_[int(role)].load(std::memory_order_relaxed); }
+  ThreadGrant grant(Role role) const;
+  // mlockall's outcome: locked, or the errno that refused it (0: not asked).
+  bool memory_locked() const { return memory_locked_.load(std::memory_order_relaxed); }
+  // Spin or Sleep, as the haptic thread resolved Auto when it started.
+  HapticTiming haptic_timing() const { return timing_.load(std::memory_order_relaxed); }
+  int memory_lock_error() const { return memory_lock_error_.load(std::memory_order_relaxed); }
+  // CPU seconds a running thread has used so far (its own clock); -1 when
+  // the system cannot tell. For benchmarks: what a timing mode costs.
+  double cpu_seconds(Role role) const;
+  // The periods of the last LoopStats::kWindow iterations, for benchmarks.
+  std::vector<double> periods(Role role) const { return loop_stats_[int(role)].periods(); }
 
   // Fault injection, for tests: a stalled thread does nothing until released.
   void stall(Role role, bool stalled) { stalled_[int(role)].store(stalled, std::memory_order_relaxed); }
@@ -136,7 +177,11 @@ class Threads {
   // records the iteration's statistics.
   void pace(Role role, double period, double start, double& previous_start, double& deadline);
   bool wait_while_stalled(Role role);
-  void pin(Role role);
+  // Pins the calling thread and raises its priority as the settings ask.
+  void configure(Role role);
+  // Waits for `deadline` (s since epoch_): by an absolute sleep, or a sleep
+  // and a spin for the haptic thread in Spin mode.
+  void wait_until(Role role, double deadline) const;
   double now() const;
 
   World& world_;
@@ -146,6 +191,10 @@ class Threads {
   std::atomic<bool> stop_{false};
   std::atomic<bool> stalled_[3] = {};
   std::atomic<int> pinned_[3] = {};
+  std::atomic<int> priority_[3] = {}, priority_error_[3] = {};
+  std::atomic<bool> memory_locked_{false};
+  std::atomic<HapticTiming> timing_{HapticTiming::Sleep};
+  std::atomic<int> memory_lock_error_{0};
   LoopStats loop_stats_[3];
   std::atomic<std::uint64_t> invalid_poses_{0}, stale_ticks_{0}, untrusted_ticks_{0}, limited_ticks_{0},
       torn_snapshots_{0}, dropped_contacts_{0};

@@ -107,6 +107,11 @@ std::uint32_t World::add_scripted_device(std::unique_ptr<ScriptedDevice> device)
   return static_cast<std::uint32_t>(scripted_devices_.size() - 1);
 }
 
+std::uint32_t World::add_stream_device(std::unique_ptr<StreamDevice> device) {
+  stream_devices_.push_back(std::move(device));
+  return static_cast<std::uint32_t>(stream_devices_.size() - 1);
+}
+
 Pose World::current_pose(Handle h) const {
   if (running() && bodies_[h.index].type == BodyType::Tool) return threads_->tool_pose(h.index);
   return bodies_[h.index].pose;

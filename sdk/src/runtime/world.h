@@ -8,6 +8,7 @@
 #include "runtime/body_tree.h"
 #include "runtime/device.h"
 #include "runtime/scripted_device.h"
+#include "runtime/stream_device.h"
 
 #include <cstdint>
 #include <memory>
@@ -154,6 +155,12 @@ class World {
   ScriptedDevice* scripted_device(std::uint32_t index) const {
     return index < scripted_devices_.size() ? scripted_devices_[index].get() : nullptr;
   }
+  // Streamed devices, likewise.
+  std::uint32_t add_stream_device(std::unique_ptr<StreamDevice> device);
+  StreamDevice* stream_device(std::uint32_t index) const {
+    return index < stream_devices_.size() ? stream_devices_[index].get() : nullptr;
+  }
+  std::uint32_t stream_device_count() const { return static_cast<std::uint32_t>(stream_devices_.size()); }
 
   // The threads (docs/threading.md). start_threads fails (false, with
   // `status`) on bad settings; while they run, meshes and bodies can be
@@ -229,6 +236,7 @@ class World {
   // search's reading of the poses meet here (never on the haptic path).
   mutable std::mutex scene_mutex_;
   std::vector<std::unique_ptr<ScriptedDevice>> scripted_devices_;
+  std::vector<std::unique_ptr<StreamDevice>> stream_devices_;
   std::unique_ptr<Threads> threads_;
 };
 

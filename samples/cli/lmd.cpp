@@ -1,0 +1,112 @@
+// proxima lmd A B: the LMD set of two meshes at given poses.
+#include "cli.h"
+
+namespace proxcli {
+
+int lmd(Args& args) {
+  const std::string path_a = args.next("mesh A"), path_b = args.next("mesh B");
+  proxPose pose_a = identity(), pose_b = identity();
+  double cutoff = 0.005;
+  proxMethod method = PROX_METHOD_PRECISE;
+  Settings settings = preset(PROX_FORCE_PRESET_HARD);
+  std::string force_name = "hard";
+  std::string json_path;
+  while (!args.empty()) {
+    const std::string opt = args.next("option");
+    if (opt == "--pose-a")
+      pose_a = args.pose("--pose-a");
+    else if (opt == "--pose-b")
+      pose_b = args.pose("--pose-b");
+    else if (opt == "--cutoff")
+      cutoff = parse_number(args.next("--cutoff value"), "--cutoff");
+    else if (opt == "--method")
+      method = parse_method(args.next("--method value"));
+    else if (opt == "--force")
+      settings = parse_force(force_name = args.next("--force value"));
+    else if (opt == "--json")
+      json_path = args.next("--json file");
+    else
+      fail("lmd: unknown option '" + opt + "'");
+  }
+  // The force falls from its maximum at the safety distance to zero at the
+  // cutoff, so the cutoff must lie beyond the safety distance.
+  if (!(cutoff > settings.force.safetyDistance)) {
+    char text[160];
+    std::snprintf(text, sizeof text, "--cutoff must be larger than the safety distance of --force %s (%g)",
+                  force_name.c_str(), settings.force.safetyDistance);
+    fail(text);
+  }
+  settings.method = method;
+  settings.cutoff = cutoff;
+  const Scene scene(settings, path_a, path_b, pose_a, pose_b);
+  check(proxWorld_Step(scene.world()));
+  const std::vector<proxContact> contacts = scene.contacts();
+  const proxWrench w = scene.wrench();
+  proxSearchStats r;
+  check(proxWorld_GetSearchStats(scene.world(), &r));
+  const double min_d = min_distance(contacts);
+
+  std::printf("%s LMDs between %s and %s within %g: %zu (from %llu candidates)\n", method_name(method),
+              path_a.c_str(), path_b.c_str(), cutoff, contacts.size(),
+              static_cast<unsigned long long>(r.candidates));
+  for (const proxContact& c : contacts)
+    std::printf("  tri %u - tri %u  d=%.9g  %s-%s  a=(%.6g, %.6g, %.6g) b=(%.6g, %.6g, %.6g)\n",
+                c.triangleOther, c.triangleTool, c.distance, feature_name(c.featureOther),
+                feature_name(c.featureTool), c.pointOther.x, c.pointOther.y, c.pointOther.z, c.pointTool.x,
+                c.pointTool.y, c.pointTool.z);
+  if (contacts.empty())
+    std::printf("  minimum distance: none within the cutoff\n");
+  else
+    std::printf("  minimum distance: %.9g\n", min_d);
+  std::printf("  force on B:  (%.6g, %.6g, %.6g) N%s\n", w.force.x, w.force.y, w.force.z,
+              w.clipped ? " (clipped)" : "");
+  std::printf("  torque on B: (%.6g, %.6g, %.6g) N m about its box centre\n", w.torque.x, w.torque.y,
+              w.torque.z);
+  std::printf(
+      "  search: %llu node pairs, %llu leaf pairs, %llu culled by visibility, %.3f ms; reduction %.3f ms\n",
+      static_cast<unsigned long long>(r.nodePairs), static_cast<unsigned long long>(r.leafPairs),
+      static_cast<unsigned long long>(r.visibilityRejections), r.globalSeconds * 1e3,
+      r.reductionSeconds * 1e3);
+
+  if (!json_path.empty()) {
+    auto count = [](uint64_t n) { return static_cast<long long>(n); };
+    Json j;
+    j.begin_object();
+    // -1 when no pair is within the cutoff (the minimum is then unknown).
+    j.key("min_distance").value(min_d);
+    j.key("method").value(method_name(method));
+    j.key("cutoff").value(cutoff);
+    j.key("lmds").begin_array();
+    for (const proxContact& c : contacts) {
+      j.begin_object();
+      j.key("tri_a").value(static_cast<long long>(c.triangleOther));
+      j.key("tri_b").value(static_cast<long long>(c.triangleTool));
+      j.key("point_a").vec3(c.pointOther);
+      j.key("point_b").vec3(c.pointTool);
+      j.key("distance").value(c.distance);
+      j.key("feature_a").value(feature_name(c.featureOther));
+      j.key("feature_b").value(feature_name(c.featureTool));
+      j.end_object();
+    }
+    j.end_array();
+    j.key("force").vec3(w.force);
+    j.key("torque").vec3(w.torque);
+    j.key("stats").begin_object();
+    j.key("candidates").value(count(r.candidates));
+    j.key("node_pairs").value(count(r.nodePairs));
+    j.key("leaf_pairs").value(count(r.leafPairs));
+    j.key("plane_rejections").value(count(r.planeRejections));
+    j.key("visibility_rejections").value(count(r.visibilityRejections));
+    j.key("normal_rejections").value(count(r.normalRejections));
+    j.key("distance_evaluations").value(count(r.distanceEvaluations));
+    j.key("global_ms").value(r.globalSeconds * 1e3);
+    j.key("reduction_ms").value(r.reductionSeconds * 1e3);
+    j.key("tracking_cache_hits").value(count(r.reductionCacheHits));
+    j.end_object();
+    j.end_object();
+    write_file(json_path, j.str() + "\n");
+  }
+  return 0;
+}
+
+}  // namespace proxcli

@@ -1,0 +1,69 @@
+// proxima: the command-line face of the engine.
+//
+//   proxima info FILE
+//   proxima lmd A B [--pose-a tx ty tz qw qx qy qz] [--pose-b ...] [--cutoff D]
+//                   [--method precise|original|reference] [--force hard|soft] [--json FILE]
+//   proxima polylines A B [--pose-a ...] [--pose-b ...] [--json FILE]
+//   proxima path [A B] [--poses FILE | --steps N] [--method precise|original|both] [--force hard|soft]
+//                [--csv FILE]
+//
+// Poses are world poses of the meshes as loaded (quaternion w first); lengths
+// are in the meshes' units (metres for the shared assets). docs/cli.md has
+// the details and the JSON layout.
+//
+//   proxima run [A B] [--device scripted|stream] [--poses FILE] [--seconds S] ...
+//
+// A customer of the SDK like any other: it sees only the C API
+// (<proxima/proxima.h>, libproxima.so) and the samples' own utilities.
+#include "cli.h"
+
+namespace {
+
+const char* kUsage =
+    "usage:\n"
+    "  proxima info FILE\n"
+    "  proxima lmd A B [--pose-a tx ty tz qw qx qy qz] [--pose-b tx ty tz qw qx qy qz]\n"
+    "                  [--cutoff D] [--method precise|original|reference] [--force hard|soft] [--json FILE]\n"
+    "  proxima polylines A B [--pose-a tx ty tz qw qx qy qz] [--pose-b ...] [--json FILE]\n"
+    "  proxima path [A B] [--poses FILE | --steps N] [--method precise|original|both] [--force hard|soft]\n"
+    "               [--csv FILE]\n"
+    "  proxima run [A B] [--device scripted|stream] [--poses FILE] [--seconds S] [--hold S]\n"
+    "              [--method precise|original] [--force hard|soft] [--json FILE]\n"
+    "              [--stream-rate HZ] [--stream-mode hold|interpolate|extrapolate]\n"
+    "              [--haptic-timing auto|spin|sleep] [--spin-margin S] [--realtime] [--lock-memory]\n"
+    "  proxima --version\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace proxcli;
+  if (argc < 2) {
+    std::fputs(kUsage, stderr);
+    return 2;
+  }
+  const std::string command = argv[1];
+  try {
+    Args args(argc, argv, 2);
+    if (command == "info") return info(args);
+    if (command == "lmd") return lmd(args);
+    if (command == "polylines") return polylines(args);
+    if (command == "path") return path(args);
+    if (command == "run") return run(args);
+    if (command == "--version") {
+      std::printf("proxima %s\n", PROX_VERSION_STRING);
+      return 0;
+    }
+    if (command == "--help" || command == "-h") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
+    std::fprintf(stderr, "proxima: unknown command '%s'\n%s", command.c_str(), kUsage);
+    return 2;
+  } catch (const UserError& e) {
+    std::fprintf(stderr, "proxima: %s\n", e.message.c_str());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "proxima: %s\n", e.what());
+    return 1;
+  }
+}

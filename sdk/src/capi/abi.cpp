@@ -1,0 +1,39 @@
+// The public structs' sizes are part of the ABI; the bindings and the C11
+// header test check the same numbers.
+#include <proxima/proxima.h>
+
+static_assert(sizeof(proxWorldId) == 8, "ABI");
+static_assert(sizeof(proxMeshId) == 16, "ABI");
+static_assert(sizeof(proxBodyId) == 16, "ABI");
+static_assert(sizeof(proxVec3) == 24, "ABI");
+static_assert(sizeof(proxQuat) == 32, "ABI");
+static_assert(sizeof(proxPose) == 56, "ABI");
+static_assert(sizeof(proxForceSettings) == 40, "ABI");
+static_assert(sizeof(proxWorldDef) == 64, "ABI");
+static_assert(sizeof(proxMeshDef) == 32, "ABI");
+static_assert(sizeof(proxBodyDef) == 112, "ABI");
+static_assert(sizeof(proxContact) == 112, "ABI");
+static_assert(sizeof(proxWrench) == 56, "ABI");
+static_assert(sizeof(proxWorldStats) == 32, "ABI");
+static_assert(sizeof(proxPolylineInfo) == 32, "ABI");
+static_assert(sizeof(proxMeshInfo) == 68 + 4, "ABI");
+static_assert(sizeof(proxDeviceDef) == 32, "ABI");
+static_assert(sizeof(proxScriptedDeviceId) == 16, "ABI");
+static_assert(sizeof(proxScriptedDeviceDef) == 32, "ABI");
+static_assert(sizeof(proxScriptedDeviceRecord) == 104, "ABI");
+static_assert(sizeof(proxThreadsDef) == 104, "ABI");
+static_assert(sizeof(proxThreadStats) == 120, "ABI");
+static_assert(sizeof(proxSafetyStats) == 48, "ABI");
+static_assert(sizeof(proxResult) == 4 && sizeof(proxMethod) == 4 && sizeof(proxBodyType) == 4 &&
+                  sizeof(proxThread) == 4,
+              "ABI");
+static_assert(sizeof(proxForcePreset) == 4, "ABI");
+static_assert(sizeof(proxMeshStats) == 48, "ABI");
+static_assert(sizeof(proxSearchStats) == 88, "ABI");
+static_assert(sizeof(proxTrackStats) == 48, "ABI");
+static_assert(sizeof(proxIntersectionStats) == 40, "ABI");
+static_assert(sizeof(proxStreamDeviceId) == 16, "ABI");
+static_assert(sizeof(proxStreamDeviceDef) == 40, "ABI");
+static_assert(sizeof(proxStreamDeviceStats) == 80, "ABI");
+static_assert(sizeof(proxStreamMode) == 4, "ABI");
+static_assert(sizeof(proxHapticTiming) == 4, "ABI");

@@ -1,0 +1,190 @@
+// What every file of the C API shares: errors (guard() turns any C++
+// failure into a proxResult and the thread's last error), the world
+// registry and the id lookups, and the checks and conversions of C values.
+// Private to sdk/src/capi.
+#pragma once
+
+#include <proxima/proxima.h>
+
+#include "runtime/world.h"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <new>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace prox::capi {
+
+// Marks defs made by the proxDefault*Def functions.
+inline constexpr int32_t kDefCookie = 0x50524F58;  // "PROX"
+
+// The calling thread's last error message (proxGetLastError).
+extern thread_local std::string g_last_error;
+
+struct Failure {
+  proxResult code;
+  std::string message;
+};
+
+[[noreturn]] inline void fail(proxResult code, std::string message) {
+  throw Failure{code, std::move(message)};
+}
+
+template <typename F>
+proxResult guard(const char* function, F&& body) {
+  try {
+    body();
+    g_last_error.clear();
+    return PROX_SUCCESS;
+  } catch (const Failure& f) {
+    g_last_error = std::string(function) + ": " + f.message;
+    return f.code;
+  } catch (const std::bad_alloc&) {
+    g_last_error = std::string(function) + ": out of memory";
+    return PROX_ERROR_INTERNAL;
+  } catch (const std::exception& e) {
+    g_last_error = std::string(function) + ": internal error: " + e.what();
+    return PROX_ERROR_INTERNAL;
+  } catch (...) {
+    g_last_error = std::string(function) + ": internal error";
+    return PROX_ERROR_INTERNAL;
+  }
+}
+
+struct WorldEntry {
+  uint32_t generation = 0;
+  std::unique_ptr<runtime::World> world;
+  std::thread::id owner;
+};
+
+extern std::mutex g_worlds_mutex;  // guards the registry's shape, not the worlds
+extern std::vector<WorldEntry> g_worlds;
+
+// The live world an id names, called from its game thread (else fails).
+runtime::World& world_of(proxWorldId id, const char* what = "world");
+
+// Makes a world's streamed device ids invalid, waiting for calls under way
+// on other threads to finish with them (stream_device.cpp). Before the world
+// is destroyed, with its threads stopped.
+void release_stream_devices(proxWorldId world);
+
+inline runtime::Handle mesh_of(proxMeshId id, runtime::World*& world) {
+  world = &world_of(id.world, "mesh's world");
+  if (id.index1 == 0) fail(PROX_ERROR_INVALID_HANDLE, "mesh is a null id");
+  const runtime::Handle h{id.index1 - 1, id.generation};
+  if (!world->mesh_alive(h)) fail(PROX_ERROR_INVALID_HANDLE, "mesh does not name a live mesh of its world");
+  return h;
+}
+
+inline runtime::Handle body_of(proxBodyId id, runtime::World*& world, const char* what = "body") {
+  world = &world_of(id.world, "body's world");
+  if (id.index1 == 0) fail(PROX_ERROR_INVALID_HANDLE, std::string(what) + " is a null id");
+  const runtime::Handle h{id.index1 - 1, id.generation};
+  if (!world->body_alive(h))
+    fail(PROX_ERROR_INVALID_HANDLE, std::string(what) + " does not name a live body of its world");
+  return h;
+}
+
+inline runtime::Handle tool_of(proxBodyId id, runtime::World*& world) {
+  const runtime::Handle h = body_of(id, world, "tool");
+  if (world->type(h) != runtime::BodyType::Tool)
+    fail(PROX_ERROR_INVALID_ARGUMENT, "tool is not a PROX_BODY_TOOL body");
+  return h;
+}
+
+// Calls that change the scene's shape wait for the threads to stop.
+inline void need_stopped(const runtime::World& w) {
+  if (w.running()) fail(PROX_ERROR_BUSY, "the world's threads are running; call proxWorld_StopThreads first");
+}
+
+// Every def carries the cookie its proxDefault*Def() set; one that does not
+// was filled by hand (and its unset fields would be taken for choices).
+template <typename Def>
+inline void need_def(const Def& def, const char* maker) {
+  if (def.internalValue != kDefCookie)
+    fail(PROX_ERROR_INVALID_ARGUMENT, std::string("def was not initialised with ") + maker + "()");
+}
+
+template <typename T>
+inline void need(const T* p, const char* name) {
+  if (!p) fail(PROX_ERROR_INVALID_ARGUMENT, std::string(name) + " is NULL");
+}
+
+inline void need_finite(double v, const std::string& name) {
+  if (!std::isfinite(v))
+    fail(PROX_ERROR_INVALID_ARGUMENT, name + " is not finite (" + std::to_string(v) + ")");
+}
+
+inline void need_positive(double v, const std::string& name) {
+  need_finite(v, name);
+  if (!(v > 0.0)) fail(PROX_ERROR_INVALID_ARGUMENT, name + " must be > 0 (it is " + std::to_string(v) + ")");
+}
+
+inline Vec3 to_vec(const proxVec3& v, const std::string& name) {
+  need_finite(v.x, name + ".x");
+  need_finite(v.y, name + ".y");
+  need_finite(v.z, name + ".z");
+  return {v.x, v.y, v.z};
+}
+
+inline proxVec3 to_c(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+inline Pose to_pose(const proxPose& p, const std::string& name) {
+  const Vec3 t = to_vec(p.position, name + ".position");
+  const double q[4] = {p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z};
+  for (int i = 0; i < 4; ++i) need_finite(q[i], name + ".rotation");
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (!(n > 1e-12)) fail(PROX_ERROR_INVALID_ARGUMENT, name + ".rotation is a zero quaternion");
+  return Pose::from_quaternion(t, q[0] / n, q[1] / n, q[2] / n, q[3] / n);
+}
+
+inline proxPose to_c(const Pose& p) {
+  const glm::dquat q = glm::quat_cast(p.rotation);
+  return {to_c(p.translation), {q.w, q.x, q.y, q.z}};
+}
+
+inline proxResult status_code(const Status& s) {
+  switch (s.code()) {
+    case StatusCode::Ok:
+      return PROX_SUCCESS;
+    case StatusCode::InvalidArgument:
+      return PROX_ERROR_INVALID_MESH;
+    case StatusCode::ParseError:
+      return PROX_ERROR_PARSE;
+    case StatusCode::IoError:
+      return PROX_ERROR_FILE;
+    case StatusCode::Unsupported:
+      return PROX_ERROR_UNSUPPORTED;
+  }
+  return PROX_ERROR_INTERNAL;
+}
+
+inline void check(const Status& s) {
+  if (!s) fail(status_code(s), s.message());
+}
+
+inline ForceSettings to_force(const proxForceSettings& f, double cutoff) {
+  if (f.curve != PROX_FORCE_EXPONENTIAL && f.curve != PROX_FORCE_LINEAR)
+    fail(PROX_ERROR_INVALID_ARGUMENT, "def->force.curve is not a proxForceCurve");
+  need_positive(f.maxForce, "def->force.maxForce");
+  need_positive(f.maxTorque, "def->force.maxTorque");
+  need_positive(f.decayLength, "def->force.decayLength");
+  need_finite(f.safetyDistance, "def->force.safetyDistance");
+  if (f.safetyDistance < 0.0 || !(f.safetyDistance < cutoff))
+    fail(PROX_ERROR_INVALID_ARGUMENT, "def->force.safetyDistance must be in [0, cutoff)");
+  ForceSettings s;
+  s.curve = f.curve == PROX_FORCE_LINEAR ? ForceCurve::Linear : ForceCurve::Exponential;
+  s.max_force = f.maxForce;
+  s.max_torque = f.maxTorque;
+  s.safety_distance = f.safetyDistance;
+  s.decay_length = f.decayLength;
+  s.cutoff = cutoff;
+  return s;
+}
+
+}  // namespace prox::capi

@@ -1,0 +1,171 @@
+// Devices: the application's callbacks, and the built-in scripted device.
+#include "capi/common.h"
+
+#include "io/poses.h"
+
+using namespace prox;
+using namespace prox::capi;
+
+namespace {
+
+// A C device behind the runtime's device: converts on the haptic thread
+// (no allocation, no lock).
+struct DeviceAdapter {
+  explicit DeviceAdapter(const proxDeviceDef& d) : def(d) {}
+  static bool read(void* user, runtime::DevicePose* out) {
+    const auto* self = static_cast<const DeviceAdapter*>(user);
+    proxPose p{};
+    if (!self->def.readPose(self->def.userData, &p)) return false;
+    out->position[0] = p.position.x, out->position[1] = p.position.y, out->position[2] = p.position.z;
+    out->rotation[0] = p.rotation.w, out->rotation[1] = p.rotation.x, out->rotation[2] = p.rotation.y,
+    out->rotation[3] = p.rotation.z;
+    return true;
+  }
+  static void write(void* user, const runtime::DeviceWrench* w) {
+    const auto* self = static_cast<const DeviceAdapter*>(user);
+    const proxWrench out{{w->force[0], w->force[1], w->force[2]},
+                         {w->torque[0], w->torque[1], w->torque[2]},
+                         w->limited ? 1 : 0};
+    self->def.writeWrench(self->def.userData, &out);
+  }
+  proxDeviceDef def;
+};
+
+// The scripted device seen through the C device callbacks.
+struct ScriptedTrampoline {
+  static proxBool read(void* user, proxPose* pose) {
+    runtime::DevicePose p{};
+    if (!static_cast<runtime::ScriptedDevice*>(user)->read_pose(&p)) return 0;
+    *pose = {{p.position[0], p.position[1], p.position[2]},
+             {p.rotation[0], p.rotation[1], p.rotation[2], p.rotation[3]}};
+    return 1;
+  }
+  static void write(void* user, const proxWrench* w) {
+    static_cast<runtime::ScriptedDevice*>(user)->write_wrench(
+        {{w->force.x, w->force.y, w->force.z}, {w->torque.x, w->torque.y, w->torque.z}, w->clipped != 0});
+  }
+};
+
+proxScriptedDeviceId add_scripted(proxWorldId world, runtime::World& w,
+                                  std::vector<runtime::ScriptedPose> poses, double seconds_per_pose,
+                                  bool loop) {
+  const std::uint32_t i = w.add_scripted_device(
+      std::make_unique<runtime::ScriptedDevice>(std::move(poses), seconds_per_pose, loop));
+  return {i + 1, 0, world};
+}
+
+runtime::ScriptedDevice& scripted_of(proxScriptedDeviceId id) {
+  const runtime::World& w = world_of(id.world, "device's world");
+  if (id.index1 == 0) fail(PROX_ERROR_INVALID_HANDLE, "device is a null id");
+  runtime::ScriptedDevice* d = w.scripted_device(id.index1 - 1);
+  if (!d) fail(PROX_ERROR_INVALID_HANDLE, "device does not name a scripted device of its world");
+  return *d;
+}
+
+}  // namespace
+
+extern "C" {
+
+proxDeviceDef proxDefaultDeviceDef(void) {
+  proxDeviceDef d{};
+  d.internalValue = kDefCookie;
+  return d;
+}
+
+proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def) {
+  return guard("proxBody_SetDevice", [&] {
+    runtime::World* w = nullptr;
+    const runtime::Handle h = tool_of(tool, w);
+    need_stopped(*w);
+    if (!def) {
+      w->set_device(h, runtime::Device{});
+      return;
+    }
+    need_def(*def, "proxDefaultDeviceDef");
+    if (!def->readPose) fail(PROX_ERROR_INVALID_ARGUMENT, "def->readPose is NULL");
+    auto adapter = std::make_shared<DeviceAdapter>(*def);
+    runtime::Device d;
+    d.read_pose = &DeviceAdapter::read;
+    d.write_wrench = def->writeWrench ? &DeviceAdapter::write : nullptr;
+    d.user = adapter.get();
+    d.owner = adapter;
+    w->set_device(h, d);
+  });
+}
+
+proxScriptedDeviceDef proxDefaultScriptedDeviceDef(void) {
+  proxScriptedDeviceDef d{};
+  d.secondsPerPose = 0.001;
+  d.internalValue = kDefCookie;
+  return d;
+}
+
+proxResult proxWorld_CreateScriptedDevice(proxWorldId world, const proxScriptedDeviceDef* def,
+                                          proxScriptedDeviceId* device) {
+  return guard("proxWorld_CreateScriptedDevice", [&] {
+    need(device, "device");
+    *device = proxScriptedDeviceId{};
+    runtime::World& w = world_of(world);
+    need(def, "def");
+    need_def(*def, "proxDefaultScriptedDeviceDef");
+    if (def->poseCount < 1) fail(PROX_ERROR_INVALID_ARGUMENT, "def->poseCount must be >= 1");
+    need(def->poses, "def->poses");
+    need_positive(def->secondsPerPose, "def->secondsPerPose");
+    std::vector<runtime::ScriptedPose> path(static_cast<std::size_t>(def->poseCount));
+    for (int32_t i = 0; i < def->poseCount; ++i)
+      path[std::size_t(i)] =
+          runtime::ScriptedPose::of(to_pose(def->poses[i], "def->poses[" + std::to_string(i) + "]"));
+    *device = add_scripted(world, w, std::move(path), def->secondsPerPose, def->loop != 0);
+  });
+}
+
+proxResult proxWorld_LoadScriptedDevice(proxWorldId world, const char* path, double secondsPerPose,
+                                        proxBool loop, proxScriptedDeviceId* device) {
+  return guard("proxWorld_LoadScriptedDevice", [&] {
+    need(device, "device");
+    *device = proxScriptedDeviceId{};
+    runtime::World& w = world_of(world);
+    need(path, "path");
+    need_positive(secondsPerPose, "secondsPerPose");
+    std::vector<io::PoseRecord> records;
+    check(io::read_poses(path, records));
+    std::vector<runtime::ScriptedPose> poses;
+    for (const io::PoseRecord& r : records) {
+      runtime::ScriptedPose p;
+      p.position = Vec3(r.position[0], r.position[1], r.position[2]);
+      for (int k = 0; k < 4; ++k) p.rotation[k] = r.rotation[k];
+      poses.push_back(p);
+    }
+    *device = add_scripted(world, w, std::move(poses), secondsPerPose, loop != 0);
+  });
+}
+
+proxResult proxScriptedDevice_GetDeviceDef(proxScriptedDeviceId device, proxDeviceDef* def) {
+  return guard("proxScriptedDevice_GetDeviceDef", [&] {
+    need(def, "def");
+    runtime::ScriptedDevice& d = scripted_of(device);
+    *def = proxDefaultDeviceDef();
+    def->readPose = &ScriptedTrampoline::read;
+    def->writeWrench = &ScriptedTrampoline::write;
+    def->userData = &d;
+  });
+}
+
+proxResult proxScriptedDevice_GetRecord(proxScriptedDeviceId device, proxScriptedDeviceRecord* record) {
+  return guard("proxScriptedDevice_GetRecord", [&] {
+    need(record, "record");
+    const runtime::ScriptedRecord r = scripted_of(device).record();
+    *record = proxScriptedDeviceRecord{};
+    record->reads = r.reads;
+    record->writes = r.writes;
+    record->progress = r.progress;
+    record->maxForce = r.max_force;
+    record->maxTorque = r.max_torque;
+    record->maxForceStep = r.max_force_step;
+    record->lastForce = to_c(r.last_force);
+    record->lastTorque = to_c(r.last_torque);
+    record->allFinite = r.finite ? 1 : 0;
+  });
+}
+
+}  // extern "C"
