@@ -77,7 +77,7 @@ void print_summary(const Timing& t, const Options& o, const std::string& device,
 
 class Viewer {
  public:
-  explicit Viewer(const Options& o) : options_(o), show_(o.show) {
+  explicit Viewer(const Options& o) : options_(o), show_(o.show), tool_target_(o.pose_b) {
     path_a_ = o.mesh_a.empty() ? default_asset("bunny.obj") : o.mesh_a;
     path_b_ = o.mesh_b.empty() ? path_a_ : o.mesh_b;
     scene_ = std::make_unique<Scene>(options_, path_a_, path_b_);
@@ -149,6 +149,12 @@ class Viewer {
   }
   int finish(const std::string& device) {
     print_summary(timing_, options_, device, frame_);
+    proxStreamDeviceStats stream;
+    if (scene_->stream_stats(&stream)) {
+      const proxPose p = scene_->tool_pose();
+      std::printf("proxima-viewer: mouse device: %llu poses pushed, tool at %.6f %.6f %.6f\n",
+                  static_cast<unsigned long long>(stream.samplesPushed), p.position.x, p.position.y, p.position.z);
+    }
     const int messages = VulkanContext::validation_messages();
     if (messages > 0) {
       std::fprintf(stderr, "proxima-viewer: %d validation message%s (printed above)\n", messages, messages == 1 ? "" : "s");
@@ -159,6 +165,7 @@ class Viewer {
 
   Options options_;
   Show show_;
+  proxPose tool_target_;  // where the mouse has taken the tool (the mouse device)
   std::string path_a_, path_b_;
   std::unique_ptr<Scene> scene_;
   RenderMesh mesh_a_, mesh_b_;
@@ -274,13 +281,12 @@ int Viewer::run_window() {
         scene_ = std::make_unique<Scene>(options_, path_a_, path_b_);
         std::printf("proxima-viewer: method %s, force %s\n", method_name(options_.method), force_name(options_.force));
       }
-      if (input.mouse_device && glm::length(input.tool_drag) > 0.0) {
-        proxPose p = scene_->tool_pose();
-        p.position.x += input.tool_drag.x;
-        p.position.y += input.tool_drag.y;
-        p.position.z += input.tool_drag.z;
-        scene_->set_tool_pose(p);
+      if (input.mouse_device) {
+        tool_target_.position.x += input.tool_drag.x;
+        tool_target_.position.y += input.tool_drag.y;
+        tool_target_.position.z += input.tool_drag.z;
         input.tool_drag = glm::dvec3(0.0);
+        scene_->push_tool_pose(tool_target_);  // every frame: a silent stream fades the force out
       }
       glfwGetFramebufferSize(window, &w, &h);
       if (w == 0 || h == 0) {  // minimised

@@ -24,7 +24,8 @@ const char* const kUsage =
     "  --device auto|scripted|mouse    what drives the tool:\n"
     "                                    scripted: the scripted device along path T (approach, hold,\n"
     "                                    retreat, looped) or along --poses\n"
-    "                                    mouse: right-drag moves the tool in the view plane (window only)\n"
+    "                                    mouse: right-drag moves the tool in the view plane, through the\n"
+    "                                    streamed device (window only)\n"
     "                                    auto: mouse in a window, scripted headless (the hidapi and\n"
     "                                    gamepad devices are not in this version)\n"
     "                                  default: scripted without meshes; with A and B the tool stays put\n"
@@ -32,7 +33,7 @@ const char* const kUsage =
     "  --seconds S                     path T: the time of each leg; --poses: of the whole path (default 4)\n"
     "  --headless                      render offscreen (no display needed; picks the CPU Vulkan device)\n"
     "  --frames N                      render N frames, then exit (headless default 1; window: until closed)\n"
-    "  --out DIR                       write DIR/frame-0000.png and frame-0000.json per frame\n"
+    "  --out DIR                       write DIR/frame-0000.png and frame-0000.json per frame (headless)\n"
     "  --size WxH                      image or window size in pixels (default 1280x720)\n"
     "  --msaa 1|4                      samples per pixel (default 4)\n"
     "  --show LIST                     comma-separated: meshes,strings,polylines,force,hud,grid, all or\n"
@@ -165,8 +166,7 @@ Options parse_options(int argc, char** argv, bool* help) {
     o.mesh_b = meshes[1];
   }
   if (o.headless && !frames_given) o.frames = 1;
-  if (!o.out_dir.empty() && !o.headless && !frames_given)
-    fail("--out in a window needs --frames N (or use --headless)");
+  if (!o.out_dir.empty() && !o.headless) fail("--out writes headless frames: add --headless");
   if (o.device.empty()) {
     o.device_kind = o.mesh_a.empty() || !o.poses_file.empty() ? DeviceKind::scripted : DeviceKind::none;
   } else if (o.device == "auto") {

@@ -114,6 +114,19 @@ void Scene::build(const Options& options, const std::string& path_a, const std::
     proxDeviceDef device_def;
     check(proxScriptedDevice_GetDeviceDef(device, &device_def));
     check(proxBody_SetDevice(tool_, &device_def));
+  } else if (options.device_kind == DeviceKind::mouse) {
+    // The streamed device (docs/devices.md), fed once a frame. A software
+    // renderer's frames can take 50 ms or more: one frame of interpolation
+    // delay at 30 Hz, and silence only after half a second.
+    proxStreamDeviceDef d = proxDefaultStreamDeviceDef();
+    d.mode = PROX_STREAM_INTERPOLATE;
+    d.delay = 1.0 / 30.0;
+    d.staleAfter = 0.5;
+    check(proxWorld_CreateStreamDevice(world_, &d, &stream_));
+    check(proxStreamDevice_PushPose(stream_, &options.pose_b, proxGetTime()));
+    proxDeviceDef device_def;
+    check(proxStreamDevice_GetDeviceDef(stream_, &device_def));
+    check(proxBody_SetDevice(tool_, &device_def));
   }
 
   bounds_min_ = glm::dvec3(info_a.boundsMin.x, info_a.boundsMin.y, info_a.boundsMin.z);
@@ -216,7 +229,13 @@ void Scene::update(FrameData& frame, bool polylines) const {
   for (int t = 0; t < 3; ++t) check(proxWorld_GetThreadStats(world_, static_cast<proxThread>(t), &frame.thread_stats[t]));
 }
 
-void Scene::set_tool_pose(const proxPose& pose) { check(proxBody_SetPose(tool_, &pose)); }
+void Scene::push_tool_pose(const proxPose& pose) { check(proxStreamDevice_PushPose(stream_, &pose, proxGetTime())); }
+
+bool Scene::stream_stats(proxStreamDeviceStats* stats) const {
+  if (stream_.index1 == 0) return false;
+  check(proxStreamDevice_GetStats(stream_, stats));
+  return true;
+}
 
 proxPose Scene::tool_pose() const {
   proxPose p;

@@ -52,8 +52,11 @@ class Scene {
   // polylines only when asked, as they are computed on the call, and only
   // when the tool has moved since they were.
   void update(FrameData& frame, bool polylines) const;
-  // The mouse device: moves the tool (no device holds it) to a pose.
-  void set_tool_pose(const proxPose& pose);
+  // The mouse device: hands the streamed device holding the tool where the
+  // mouse has taken it, now (once a frame).
+  void push_tool_pose(const proxPose& pose);
+  // What the streamed device saw; false when the mouse does not drive the tool.
+  bool stream_stats(proxStreamDeviceStats* stats) const;
   proxPose tool_pose() const;
 
   // The box the camera frames: both bodies over the tool's whole path.
@@ -72,6 +75,7 @@ class Scene {
   proxBodyId a_{}, tool_{};
   proxMeshId mesh_a_{}, mesh_b_{};
   bool threads_ = false;
+  proxStreamDeviceId stream_{};  // the mouse device
   double cutoff_ = 0.0;
   proxForceSettings force_{};
   glm::dvec3 reference_local_{0.0};

@@ -314,6 +314,7 @@ class ViewerRunTest(unittest.TestCase):
                 (("--pose-b", "0", "0", "0", "0", "0", "0", "0"), 2, "quaternion"),
                 ((bunny,), 2, "two meshes"),
                 (("--poses", missing, "--headless"), 1, "missing.obj"),
+                (("--out", d, "--frames", "2"), 2, "--headless"),
             ]
             for args, code, text in cases:
                 with self.subTest(args=args):

@@ -6,11 +6,14 @@ of the same scene. Run by ctest:
     python3 window_test.py PATH_TO_PROXIMA_VIEWER PATH_TO_SHARED_ASSETS
 
 Then a left-drag in the window (xdotool) must orbit the camera: a second
-screenshot shows the scene from elsewhere.
+screenshot shows the scene from elsewhere. And with --device mouse, a
+right-drag moves the tool through the streamed device, along the view's
+right axis.
 
 Needs xvfb-run, xauth, xwd and xdotool (Debian: xvfb, xauth, x11-apps,
 xdotool).
 """
+import json
 import os
 import re
 import shutil
@@ -41,6 +44,38 @@ def scene_args():
             "--show", "meshes,strings,polylines,force,grid", "--validation"]
 
 
+def drag(button, dx):
+    """A drag of dx pixels to the right across the window's middle, in 8 steps."""
+    x, y = SIZE[0] // 2, SIZE[1] // 2
+    subprocess.run(["xdotool", "mousemove", str(x), str(y), "mousedown", button], check=True, timeout=60)
+    for step in range(1, 9):
+        time.sleep(0.05)
+        subprocess.run(["xdotool", "mousemove", str(x + dx * step // 8), str(y)], check=True, timeout=60)
+    subprocess.run(["xdotool", "mouseup", button], check=True, timeout=60)
+
+
+def mouse_args():
+    bunny = os.path.join(ASSETS, "bunny.obj")
+    return [bunny, bunny, "--pose-b", "0.3", "0", "0", "1", "0", "0", "0", "--size", f"{SIZE[0]}x{SIZE[1]}",
+            "--show", "meshes,grid", "--validation"]
+
+
+def capture_mouse(out_dir):
+    """Inside Xvfb: the mouse device; right-drag the tool, quit, keep what the viewer said."""
+    viewer = subprocess.Popen([VIEWER, *mouse_args(), "--device", "mouse"], stdout=subprocess.PIPE,
+                              stderr=subprocess.PIPE, text=True, env=sanitizers.environment(VIEWER))
+    line = viewer.stdout.readline()
+    if "presenting" in line:
+        time.sleep(0.5)
+        drag("3", 80)
+        time.sleep(1.0)
+    viewer.send_signal(signal.SIGTERM)
+    out, err = viewer.communicate(timeout=60)
+    with open(os.path.join(out_dir, "mouse.log"), "w") as f:
+        f.write(line + out + err)
+    sys.exit(viewer.returncode)
+
+
 def capture(out_dir):
     """Inside Xvfb: open the window, wait for frames, dump the screen, quit."""
     viewer = subprocess.Popen([VIEWER, *scene_args()], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
@@ -53,13 +88,7 @@ def capture(out_dir):
     time.sleep(1.0)  # a few more frames
     with open(os.path.join(out_dir, "screen.xwd"), "wb") as f:
         subprocess.run(["xwd", "-root", "-silent"], stdout=f, check=True, timeout=60)
-    # A left-drag of 80 pixels to the right across the window's middle.
-    x, y = SIZE[0] // 2, SIZE[1] // 2
-    subprocess.run(["xdotool", "mousemove", str(x), str(y), "mousedown", "1"], check=True, timeout=60)
-    for step in range(1, 9):
-        time.sleep(0.05)
-        subprocess.run(["xdotool", "mousemove", str(x + 10 * step), str(y)], check=True, timeout=60)
-    subprocess.run(["xdotool", "mouseup", "1"], check=True, timeout=60)
+    drag("1", 80)
     time.sleep(1.0)
     with open(os.path.join(out_dir, "orbited.xwd"), "wb") as f:
         subprocess.run(["xwd", "-root", "-silent"], stdout=f, check=True, timeout=60)
@@ -71,9 +100,38 @@ def capture(out_dir):
 
 
 class WindowTest(unittest.TestCase):
-    def test_window_shows_what_the_headless_frame_shows(self):
+    def setUp(self):
         for tool in ("xvfb-run", "xauth", "xwd", "xdotool"):
             self.assertIsNotNone(shutil.which(tool), f"{tool} is missing (Debian: xvfb, xauth, x11-apps, xdotool)")
+
+    def test_right_drag_moves_the_tool_through_the_streamed_device(self):
+        with tempfile.TemporaryDirectory() as d:
+            r = subprocess.run(["xvfb-run", "-a", "-s", f"-screen 0 {SCREEN}", sys.executable, os.path.abspath(__file__),
+                                "--capture-mouse", VIEWER, ASSETS, d], capture_output=True, text=True, timeout=300)
+            log = ""
+            if os.path.exists(os.path.join(d, "mouse.log")):
+                with open(os.path.join(d, "mouse.log")) as f:
+                    log = f.read()
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr + log)
+            self.assertNotRegex(log, VALIDATION)
+            m = re.search(r"mouse device: (\d+) poses pushed, tool at (\S+) (\S+) (\S+)", log)
+            self.assertIsNotNone(m, log)
+            self.assertGreater(int(m.group(1)), 5, log)
+            moved = [float(m.group(2)) - 0.3, float(m.group(3)), float(m.group(4))]
+            # The camera of the same scene, from a headless frame's sidecar.
+            headless = subprocess.run([VIEWER, *mouse_args(), "--headless", "--out", d], capture_output=True,
+                                      text=True, timeout=300, env=sanitizers.environment(VIEWER))
+            self.assertEqual(headless.returncode, 0, headless.stdout + headless.stderr)
+            with open(os.path.join(d, "frame-0000.json")) as f:
+                view = json.load(f)["view"]
+        right = [view[0], view[4], view[8]]  # the view matrix's first row: the camera's right axis
+        up = [view[1], view[5], view[9]]
+        along = sum(a * b for a, b in zip(moved, right))
+        across = abs(sum(a * b for a, b in zip(moved, up)))
+        self.assertGreater(along, 0.01, f"the tool moved by {moved}, not to the right")
+        self.assertLess(across, 0.1 * along, f"the tool moved by {moved}, not along the view's right axis")
+
+    def test_window_shows_what_the_headless_frame_shows(self):
         with tempfile.TemporaryDirectory() as d:
             r = subprocess.run(["xvfb-run", "-a", "-s", f"-screen 0 {SCREEN}", sys.executable, os.path.abspath(__file__),
                                 "--capture", VIEWER, ASSETS, d], capture_output=True, text=True, timeout=300)
@@ -115,9 +173,9 @@ class WindowTest(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) == 5 and sys.argv[1] == "--capture":
+    if len(sys.argv) == 5 and sys.argv[1] in ("--capture", "--capture-mouse"):
         VIEWER, ASSETS = sys.argv[2], sys.argv[3]
-        capture(sys.argv[4])
+        (capture if sys.argv[1] == "--capture" else capture_mouse)(sys.argv[4])
     VIEWER = os.path.abspath(sys.argv.pop(1))
     ASSETS = os.path.abspath(sys.argv.pop(1))
     unittest.main()
