@@ -8,7 +8,7 @@ of the same scene. Run by ctest:
 Then a left-drag in the window (xdotool) must orbit the camera: a second
 screenshot shows the scene from elsewhere. And with --device mouse, a
 right-drag moves the tool through the streamed device, along the view's
-right axis.
+right axis, and the M key switches the method.
 
 Needs xvfb-run, xauth, xwd and xdotool (Debian: xvfb, xauth, x11-apps,
 xdotool).
@@ -68,6 +68,8 @@ def capture_mouse(out_dir):
     if "presenting" in line:
         time.sleep(0.5)
         drag("3", 80)
+        time.sleep(0.5)
+        subprocess.run(["xdotool", "key", "m"], check=True, timeout=60)  # the method: rebuilds the world
         time.sleep(1.0)
     viewer.send_signal(signal.SIGTERM)
     out, err = viewer.communicate(timeout=60)
@@ -117,6 +119,7 @@ class WindowTest(unittest.TestCase):
             m = re.search(r"mouse device: (\d+) poses pushed, tool at (\S+) (\S+) (\S+)", log)
             self.assertIsNotNone(m, log)
             self.assertGreater(int(m.group(1)), 5, log)
+            self.assertIn("method original, force hard", log)
             moved = [float(m.group(2)) - 0.3, float(m.group(3)), float(m.group(4))]
             # The camera of the same scene, from a headless frame's sidecar.
             headless = subprocess.run([VIEWER, *mouse_args(), "--headless", "--out", d], capture_output=True,
