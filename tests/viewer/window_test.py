@@ -6,7 +6,8 @@ of the same scene. Run by ctest:
     python3 window_test.py PATH_TO_PROXIMA_VIEWER PATH_TO_SHARED_ASSETS
 
 Then a left-drag in the window (xdotool) must orbit the camera: a second
-screenshot shows the scene from elsewhere. And with --device mouse, a
+screenshot shows the scene from elsewhere, and after a resize the window
+is drawn whole at its new size. And with --device mouse, a
 right-drag moves the tool through the streamed device, along the view's
 right axis, and the M key switches the method.
 
@@ -34,6 +35,7 @@ VALIDATION = r"validation (error|warning|message)"  # what the viewer prints for
 ASSETS = None
 SIZE = (480, 270)
 SCREEN = "640x480x24"
+RESIZED = (600, 400)
 
 
 def scene_args():
@@ -94,6 +96,13 @@ def capture(out_dir):
     time.sleep(1.0)
     with open(os.path.join(out_dir, "orbited.xwd"), "wb") as f:
         subprocess.run(["xwd", "-root", "-silent"], stdout=f, check=True, timeout=60)
+    # A resize: the swapchain is made again at the new size.
+    window = subprocess.run(["xdotool", "search", "--name", "proxima-viewer"], capture_output=True, text=True,
+                            check=True, timeout=60).stdout.split()[0]
+    subprocess.run(["xdotool", "windowsize", window, str(RESIZED[0]), str(RESIZED[1])], check=True, timeout=60)
+    time.sleep(1.5)
+    with open(os.path.join(out_dir, "resized.xwd"), "wb") as f:
+        subprocess.run(["xwd", "-root", "-silent"], stdout=f, check=True, timeout=60)
     viewer.send_signal(signal.SIGTERM)
     out, err = viewer.communicate(timeout=60)
     with open(os.path.join(out_dir, "viewer.log"), "w") as f:
@@ -147,6 +156,7 @@ class WindowTest(unittest.TestCase):
             self.assertRegex(log, r"frames at 480x270")
             width, height, screen = xwd.read(os.path.join(d, "screen.xwd"))
             _, _, orbited = xwd.read(os.path.join(d, "orbited.xwd"))
+            _, _, resized = xwd.read(os.path.join(d, "resized.xwd"))
 
             headless = subprocess.run([VIEWER, *scene_args(), "--headless", "--out", d], capture_output=True,
                                       text=True, timeout=300, env=sanitizers.environment(VIEWER))
@@ -173,6 +183,17 @@ class WindowTest(unittest.TestCase):
         print(f"after the drag: {moved} pixels changed", file=sys.stderr)
         self.assertGreater(moved, SIZE[0] * SIZE[1] // 20, "the drag did not orbit the camera")
         self.assertEqual(orbited[3 * (width - 1):3 * width], bytes(3))  # still only the window is drawn
+
+        # Resized to 600x400: the viewer draws up to the window's corners (the background at the top right,
+        # not X's black at the bottom right), and X's black is just beyond them.
+        def at(x, y):
+            return resized[3 * (y * width + x):3 * (y * width + x) + 3]
+
+        background = tuple(frame.pixel(frame.width - 1, 0))
+        self.assertEqual(tuple(at(RESIZED[0] - 1, 0)), background)
+        self.assertNotEqual(at(RESIZED[0] - 1, RESIZED[1] - 1), bytes(3))
+        self.assertEqual(at(RESIZED[0] + 1, 0), bytes(3))
+        self.assertEqual(at(0, RESIZED[1] + 1), bytes(3))
 
 
 if __name__ == "__main__":
