@@ -36,8 +36,8 @@ double nice_step(double x) {
   return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * p;
 }
 
-void add_arrow(std::vector<LinePoint>& out, const glm::dvec3& from, const glm::dvec3& vec, const glm::dvec3& eye,
-               float width, const glm::vec4& color) {
+void add_arrow(std::vector<LinePoint>& out, const glm::dvec3& from, const glm::dvec3& vec,
+               const glm::dvec3& eye, float width, const glm::vec4& color) {
   const double len = glm::length(vec);
   if (!(len > 0.0)) return;
   const glm::dvec3 dir = vec / len, tip = from + vec;
@@ -78,8 +78,9 @@ void add_scene_lines(DrawList& list, const FrameData& frame, const Scene& scene,
     for (std::size_t i = 0; i < frame.contacts.size(); ++i) {
       const proxContact& c = frame.contacts[i];
       const float width = kStringWidthMin + kStringWidthGain * static_cast<float>(shares[i]);
-      add_segment(out, {c.pointTool.x, c.pointTool.y, c.pointTool.z}, {c.pointOther.x, c.pointOther.y, c.pointOther.z},
-                  width, string_color(c.distance, scene.force().safetyDistance, scene.cutoff()));
+      add_segment(out, {c.pointTool.x, c.pointTool.y, c.pointTool.z},
+                  {c.pointOther.x, c.pointOther.y, c.pointOther.z}, width,
+                  string_color(c.distance, scene.force().safetyDistance, scene.cutoff()));
     }
   }
   if (show.polylines) {
@@ -87,7 +88,8 @@ void add_scene_lines(DrawList& list, const FrameData& frame, const Scene& scene,
       const std::size_t n = line.points.size();
       for (std::size_t k = 0; k + 1 < n; ++k)
         add_segment(out, line.points[k], line.points[k + 1], kPolylineWidth, kPolylineColor);
-      if (line.closed && n > 2) add_segment(out, line.points[n - 1], line.points[0], kPolylineWidth, kPolylineColor);
+      if (line.closed && n > 2)
+        add_segment(out, line.points[n - 1], line.points[0], kPolylineWidth, kPolylineColor);
     }
   }
   if (show.force) {
@@ -95,10 +97,10 @@ void add_scene_lines(DrawList& list, const FrameData& frame, const Scene& scene,
     const proxVec3& f = frame.wrench.force;
     const proxVec3& t = frame.wrench.torque;
     const glm::dvec3 eye = camera.eye();
-    add_arrow(out, frame.reference_point, glm::dvec3(f.x, f.y, f.z) * (0.5 * r / scene.force().maxForce), eye, 3.0f,
-              kForceColor);
-    add_arrow(out, frame.reference_point, glm::dvec3(t.x, t.y, t.z) * (0.5 * r / scene.force().maxTorque), eye, 2.0f,
-              kTorqueColor);
+    add_arrow(out, frame.reference_point, glm::dvec3(f.x, f.y, f.z) * (0.5 * r / scene.force().maxForce), eye,
+              3.0f, kForceColor);
+    add_arrow(out, frame.reference_point, glm::dvec3(t.x, t.y, t.z) * (0.5 * r / scene.force().maxTorque),
+              eye, 2.0f, kTorqueColor);
   }
 }
 

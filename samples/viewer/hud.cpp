@@ -28,8 +28,9 @@ void square(DrawList& list, int row, int column, const glm::vec4& color) {
 void add_hud(DrawList& list, const HudState& hud) {
   const double ms = hud.frame_seconds * 1e3;
   bar(list, 0, ms / 50.0,
-      ms < 16.7 ? glm::vec4(0.3f, 0.8f, 0.3f, 1.0f) : ms < 33.3 ? glm::vec4(0.9f, 0.8f, 0.2f, 1.0f)
-                                                           : glm::vec4(0.9f, 0.3f, 0.2f, 1.0f));
+      ms < 16.7   ? glm::vec4(0.3f, 0.8f, 0.3f, 1.0f)
+      : ms < 33.3 ? glm::vec4(0.9f, 0.8f, 0.2f, 1.0f)
+                  : glm::vec4(0.9f, 0.3f, 0.2f, 1.0f));
   const glm::vec4 rate(0.35f, 0.55f, 0.95f, 1.0f);
   for (int t = 0; t < 3; ++t) {
     double fill = 0.0;
@@ -41,8 +42,9 @@ void add_hud(DrawList& list, const HudState& hud) {
   }
   bar(list, 4, std::log10(1.0 + static_cast<double>(hud.contacts)) / 3.0, glm::vec4(0.9f, 0.6f, 0.2f, 1.0f));
   bar(list, 5, hud.force / hud.max_force, glm::vec4(1.0f));
-  square(list, 6, 0, hud.method == PROX_METHOD_ORIGINAL ? glm::vec4(1.0f, 0.55f, 0.1f, 1.0f)
-                                                         : glm::vec4(0.3f, 0.5f, 1.0f, 1.0f));
+  square(list, 6, 0,
+         hud.method == PROX_METHOD_ORIGINAL ? glm::vec4(1.0f, 0.55f, 0.1f, 1.0f)
+                                            : glm::vec4(0.3f, 0.5f, 1.0f, 1.0f));
   const glm::vec4 device = hud.device == DeviceKind::scripted ? glm::vec4(0.6f, 0.4f, 0.9f, 1.0f)
                            : hud.device == DeviceKind::mouse  ? glm::vec4(0.2f, 0.8f, 0.7f, 1.0f)
                                                               : glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);

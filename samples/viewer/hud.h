@@ -9,7 +9,7 @@
 namespace viewer {
 
 struct HudState {
-  double frame_seconds = 0.0;  // the last frame's, CPU and GPU
+  double frame_seconds = 0.0;                // the last frame's, CPU and GPU
   const proxThreadStats* threads = nullptr;  // haptic, local, global; nullptr: the world was stepped
   std::size_t contacts = 0;
   double force = 0.0, max_force = 1.0;  // N

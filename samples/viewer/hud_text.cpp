@@ -1,7 +1,7 @@
 #include "hud_text.h"
 
-#include <imgui.h>
 #include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
 
 #include <algorithm>
 
@@ -73,7 +73,8 @@ void TextHud::layout(const HudState& hud) {
   ImGui::SetNextWindowBgAlpha(0.6f);
   ImGui::Begin("proxima", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                   ImGuiWindowFlags_NoNav);
   if (hud.frame_seconds > 0.0)
     ImGui::Text("frame   %6.1f ms", hud.frame_seconds * 1e3);
   else
@@ -81,13 +82,15 @@ void TextHud::layout(const HudState& hud) {
   const char* names[3] = {"haptic", "local ", "global"};
   for (int t = 0; t < 3; ++t) {
     if (hud.threads && hud.threads[t].running)
-      ImGui::Text("%s  %6.0f Hz  p99 %.2f ms", names[t], hud.threads[t].achievedRate, hud.threads[t].periodP99 * 1e3);
+      ImGui::Text("%s  %6.0f Hz  p99 %.2f ms", names[t], hud.threads[t].achievedRate,
+                  hud.threads[t].periodP99 * 1e3);
     else
       ImGui::Text("%s  stepped once", names[t]);
   }
   ImGui::Text("LMDs    %zu", hud.contacts);
   ImGui::Text("force   %.3f N   torque %.4f N m", hud.force, hud.torque);
-  ImGui::Text("%s, %s force, device %s", method_name(hud.method), force_name(hud.preset), device_name(hud.device));
+  ImGui::Text("%s, %s force, device %s", method_name(hud.method), force_name(hud.preset),
+              device_name(hud.device));
   ImGui::End();
   ImGui::Render();
 }

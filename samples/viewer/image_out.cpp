@@ -29,8 +29,8 @@ void write_png(const std::string& path, const std::vector<uint8_t>& rgb, uint32_
     throw std::runtime_error(path + ": writing the PNG failed");
   }
   png_init_io(png, f);
-  png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-               PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
   png_write_image(png, rows.data());
   png_write_end(png, nullptr);
@@ -54,26 +54,31 @@ void write_sidecar(const std::string& path, const Sidecar& s) {
   j.begin_object();
   matrix(j, "view", s.view);
   matrix(j, "proj", s.proj);
-  j.key("viewport").begin_array().value(static_cast<long long>(s.width)).value(static_cast<long long>(s.height)).end_array();
+  j.key("viewport")
+      .begin_array()
+      .value(static_cast<long long>(s.width))
+      .value(static_cast<long long>(s.height))
+      .end_array();
   j.key("background").begin_array();
-  for (int k = 0; k < 3; ++k) j.value(static_cast<long long>(std::lround(255.0 * static_cast<double>(s.background[k]))));
+  for (int k = 0; k < 3; ++k)
+    j.value(static_cast<long long>(std::lround(255.0 * static_cast<double>(s.background[k]))));
   j.end_array();
   j.key("contacts").begin_array();
   for (const proxContact& c : s.frame->contacts) {
-      j.begin_object();
-      j.key("point_tool").vec3(c.pointTool);
-      j.key("point_other").vec3(c.pointOther);
-      j.field("distance", c.distance);
-      j.end_object();
-    }
+    j.begin_object();
+    j.key("point_tool").vec3(c.pointTool);
+    j.key("point_other").vec3(c.pointOther);
+    j.field("distance", c.distance);
+    j.end_object();
+  }
   j.end_array();
   j.key("polylines").begin_array();
   for (const Polyline& line : s.frame->polylines) {
-      j.begin_array();
-      for (const glm::dvec3& p : line.points) j.vec3(p);
-      if (line.closed && line.points.size() > 2) j.vec3(line.points.front());  // the closing segment, explicit
-      j.end_array();
-    }
+    j.begin_array();
+    for (const glm::dvec3& p : line.points) j.vec3(p);
+    if (line.closed && line.points.size() > 2) j.vec3(line.points.front());  // the closing segment, explicit
+    j.end_array();
+  }
   j.end_array();
   j.key("force").vec3(s.frame->wrench.force);
   j.key("torque").vec3(s.frame->wrench.torque);

@@ -41,16 +41,35 @@ void on_key(GLFWwindow* w, int key, int, int action, int) {
   Input* in = of(w);
   Show& s = *in->show;
   switch (key) {
-    case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(w, GLFW_TRUE); break;
-    case GLFW_KEY_1: s.meshes = !s.meshes; break;
-    case GLFW_KEY_2: s.strings = !s.strings; break;
-    case GLFW_KEY_3: s.polylines = !s.polylines; break;
-    case GLFW_KEY_4: s.force = !s.force; break;
-    case GLFW_KEY_5: s.hud = !s.hud; break;
-    case GLFW_KEY_6: s.grid = !s.grid; break;
-    case GLFW_KEY_M: in->switch_method = true; break;
-    case GLFW_KEY_F: in->switch_force = true; break;
-    default: break;
+    case GLFW_KEY_ESCAPE:
+      glfwSetWindowShouldClose(w, GLFW_TRUE);
+      break;
+    case GLFW_KEY_1:
+      s.meshes = !s.meshes;
+      break;
+    case GLFW_KEY_2:
+      s.strings = !s.strings;
+      break;
+    case GLFW_KEY_3:
+      s.polylines = !s.polylines;
+      break;
+    case GLFW_KEY_4:
+      s.force = !s.force;
+      break;
+    case GLFW_KEY_5:
+      s.hud = !s.hud;
+      break;
+    case GLFW_KEY_6:
+      s.grid = !s.grid;
+      break;
+    case GLFW_KEY_M:
+      in->switch_method = true;
+      break;
+    case GLFW_KEY_F:
+      in->switch_force = true;
+      break;
+    default:
+      break;
   }
 }
 

@@ -46,7 +46,9 @@ using Clock = std::chrono::steady_clock;
 // Frame times and the summary printed at the end (docs/viewer.md quotes it).
 struct Timing {
   std::vector<double> seconds;
-  void add(Clock::time_point start) { seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count()); }
+  void add(Clock::time_point start) {
+    seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+  }
   double last() const { return seconds.empty() ? 0.0 : seconds.back(); }
 };
 
@@ -62,15 +64,18 @@ void print_summary(const Timing& t, const Options& o, const std::string& device,
   std::printf("proxima-viewer: %zu frames at %dx%d, %dx MSAA on %s: first %.2f ms", t.seconds.size(), o.width,
               o.height, o.msaa, device.c_str(), t.seconds.front() * 1e3);
   if (!steady.empty())
-    std::printf(", then p50 %.2f ms, p99 %.2f ms", percentile(steady, 0.5) * 1e3, percentile(steady, 0.99) * 1e3);
+    std::printf(", then p50 %.2f ms, p99 %.2f ms", percentile(steady, 0.5) * 1e3,
+                percentile(steady, 0.99) * 1e3);
   std::printf("\n");
   if (last.threads) {
     const char* names[3] = {"haptic", "local", "global"};
     for (int i = 0; i < 3; ++i) {
       const proxThreadStats& s = last.thread_stats[i];
-      std::printf("proxima-viewer: %-6s thread %8.1f Hz, period p50 %.3f ms, p99 %.3f ms, max %.3f ms, %llu overruns\n",
-                  names[i], s.achievedRate, s.periodP50 * 1e3, s.periodP99 * 1e3, s.periodMax * 1e3,
-                  static_cast<unsigned long long>(s.overruns));
+      std::printf(
+          "proxima-viewer: %-6s thread %8.1f Hz, period p50 %.3f ms, p99 %.3f ms, max %.3f ms, %llu "
+          "overruns\n",
+          names[i], s.achievedRate, s.periodP50 * 1e3, s.periodP99 * 1e3, s.periodMax * 1e3,
+          static_cast<unsigned long long>(s.overruns));
     }
   }
 }
@@ -153,11 +158,13 @@ class Viewer {
     if (scene_->stream_stats(&stream)) {
       const proxPose p = scene_->tool_pose();
       std::printf("proxima-viewer: mouse device: %llu poses pushed, tool at %.6f %.6f %.6f\n",
-                  static_cast<unsigned long long>(stream.samplesPushed), p.position.x, p.position.y, p.position.z);
+                  static_cast<unsigned long long>(stream.samplesPushed), p.position.x, p.position.y,
+                  p.position.z);
     }
     const int messages = VulkanContext::validation_messages();
     if (messages > 0) {
-      std::fprintf(stderr, "proxima-viewer: %d validation message%s (printed above)\n", messages, messages == 1 ? "" : "s");
+      std::fprintf(stderr, "proxima-viewer: %d validation message%s (printed above)\n", messages,
+                   messages == 1 ? "" : "s");
       return 1;
     }
     return 0;
@@ -191,7 +198,9 @@ class Viewer {
   }
 };
 
-VkSampleCountFlagBits samples_of(int msaa) { return msaa == 4 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT; }
+VkSampleCountFlagBits samples_of(int msaa) {
+  return msaa == 4 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
+}
 
 int Viewer::run_headless() {
   const VkExtent2D extent{static_cast<uint32_t>(options_.width), static_cast<uint32_t>(options_.height)};
@@ -269,17 +278,21 @@ int Viewer::run_window() {
     input.mouse_device = options_.device_kind == DeviceKind::mouse;
     attach_input(window, &input);
     bool announced = false;
-    for (int i = 0; !glfwWindowShouldClose(window) && !g_stop && (options_.frames == 0 || i < options_.frames);) {
+    for (int i = 0;
+         !glfwWindowShouldClose(window) && !g_stop && (options_.frames == 0 || i < options_.frames);) {
       glfwPollEvents();
       if (input.switch_method || input.switch_force) {
         if (input.switch_method)
-          options_.method = options_.method == PROX_METHOD_PRECISE ? PROX_METHOD_ORIGINAL : PROX_METHOD_PRECISE;
+          options_.method =
+              options_.method == PROX_METHOD_PRECISE ? PROX_METHOD_ORIGINAL : PROX_METHOD_PRECISE;
         if (input.switch_force)
-          options_.force = options_.force == PROX_FORCE_PRESET_HARD ? PROX_FORCE_PRESET_SOFT : PROX_FORCE_PRESET_HARD;
+          options_.force =
+              options_.force == PROX_FORCE_PRESET_HARD ? PROX_FORCE_PRESET_SOFT : PROX_FORCE_PRESET_HARD;
         input.switch_method = input.switch_force = false;
         scene_.reset();  // its threads stop first
         scene_ = std::make_unique<Scene>(options_, path_a_, path_b_);
-        std::printf("proxima-viewer: method %s, force %s\n", method_name(options_.method), force_name(options_.force));
+        std::printf("proxima-viewer: method %s, force %s\n", method_name(options_.method),
+                    force_name(options_.force));
       }
       if (input.mouse_device) {
         tool_target_.position.x += input.tool_drag.x;
@@ -298,7 +311,8 @@ int Viewer::run_window() {
       const Clock::time_point start = Clock::now();
       vk.wait_frame();  // the acquire semaphore is free again
       VkFramebuffer fb;
-      if (extent.width != target.extent().width || extent.height != target.extent().height || !target.acquire(&fb)) {
+      if (extent.width != target.extent().width || extent.height != target.extent().height ||
+          !target.acquire(&fb)) {
         target.create(*renderer, extent);
         continue;
       }
@@ -345,7 +359,8 @@ int main(int argc, char** argv) {
       return 0;
     }
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "proxima-viewer: %s\n(proxima-viewer --help lists the options)\n", e.message.c_str());
+    std::fprintf(stderr, "proxima-viewer: %s\n(proxima-viewer --help lists the options)\n",
+                 e.message.c_str());
     return 2;
   }
   std::signal(SIGINT, on_signal);

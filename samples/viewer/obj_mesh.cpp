@@ -22,7 +22,8 @@ bool ends_with(const std::string& s, const char* suffix) {
 
 RenderMesh read_render_mesh(const std::string& path) {
   if (!ends_with(path, ".obj"))
-    throw std::runtime_error(path + ": the viewer draws OBJ files only in this version (the SDK itself reads glTF)");
+    throw std::runtime_error(path +
+                             ": the viewer draws OBJ files only in this version (the SDK itself reads glTF)");
   FILE* f = std::fopen(path.c_str(), "r");
   if (!f) throw std::runtime_error(path + ": cannot read");
   RenderMesh mesh;

@@ -10,8 +10,8 @@
 namespace viewer {
 
 struct RenderMesh {
-  std::vector<float> positions;  // x, y, z per vertex, in the mesh's frame
-  std::vector<uint32_t> indices; // three per triangle
+  std::vector<float> positions;   // x, y, z per vertex, in the mesh's frame
+  std::vector<uint32_t> indices;  // three per triangle
 };
 
 // Reads the v and f records of an OBJ file (polygons fanned into

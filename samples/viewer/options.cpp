@@ -18,7 +18,8 @@ const char* const kUsage =
     "origin, B the held tool at --pose-b.\n"
     "\n"
     "  --pose-b tx ty tz qw qx qy qz   world pose of B (default identity)\n"
-    "  --cutoff D                      contacts farther apart are not wanted (m; default: the force preset's)\n"
+    "  --cutoff D                      contacts farther apart are not wanted (m; default: the force "
+    "preset's)\n"
     "  --method precise|original       the improved method or the Johnson-Cohen baseline (default precise)\n"
     "  --force hard|soft               force settings (docs/cli.md; default hard)\n"
     "  --device auto|scripted|mouse    what drives the tool:\n"
@@ -32,7 +33,8 @@ const char* const kUsage =
     "  --poses FILE                    the scripted device's path: one pose per line, tx ty tz qw qx qy qz\n"
     "  --seconds S                     path T: the time of each leg; --poses: of the whole path (default 4)\n"
     "  --headless                      render offscreen (no display needed; picks the CPU Vulkan device)\n"
-    "  --frames N                      render N frames, then exit (headless default 1; window: until closed)\n"
+    "  --frames N                      render N frames, then exit (headless default 1; window: until "
+    "closed)\n"
     "  --out DIR                       write DIR/frame-0000.png and frame-0000.json per frame (headless)\n"
     "  --size WxH                      image or window size in pixels (default 1280x720)\n"
     "  --msaa 1|4                      samples per pixel (default 4)\n"
@@ -64,7 +66,8 @@ int integer(const std::string& text, const std::string& what, int lo, int hi) {
   char* end = nullptr;
   const long v = std::strtol(text.c_str(), &end, 10);
   if (text.empty() || *end != '\0' || errno == ERANGE || v < lo || v > hi)
-    fail(what + ": '" + text + "' is not an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    fail(what + ": '" + text + "' is not an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+         "]");
   return static_cast<int>(v);
 }
 
@@ -75,13 +78,20 @@ Show parse_show(const std::string& list) {
   std::stringstream in(list);
   std::string item;
   while (std::getline(in, item, ',')) {
-    if (item == "meshes") s.meshes = true;
-    else if (item == "strings") s.strings = true;
-    else if (item == "polylines") s.polylines = true;
-    else if (item == "force") s.force = true;
-    else if (item == "hud") s.hud = true;
-    else if (item == "grid") s.grid = true;
-    else fail("--show: '" + item + "' is not one of meshes, strings, polylines, force, hud, grid");
+    if (item == "meshes")
+      s.meshes = true;
+    else if (item == "strings")
+      s.strings = true;
+    else if (item == "polylines")
+      s.polylines = true;
+    else if (item == "force")
+      s.force = true;
+    else if (item == "hud")
+      s.hud = true;
+    else if (item == "grid")
+      s.grid = true;
+    else
+      fail("--show: '" + item + "' is not one of meshes, strings, polylines, force, hud, grid");
   }
   return s;
 }
@@ -146,14 +156,20 @@ Options parse_options(int argc, char** argv, bool* help) {
       if (!(o.seconds > 0.0 && o.seconds <= 3600.0)) fail("--seconds must be in (0, 3600]");
     } else if (a == "--method") {
       const std::string m = next("--method value");
-      if (m == "precise") o.method = PROX_METHOD_PRECISE;
-      else if (m == "original") o.method = PROX_METHOD_ORIGINAL;
-      else fail("--method: '" + m + "' is not precise or original");
+      if (m == "precise")
+        o.method = PROX_METHOD_PRECISE;
+      else if (m == "original")
+        o.method = PROX_METHOD_ORIGINAL;
+      else
+        fail("--method: '" + m + "' is not precise or original");
     } else if (a == "--force") {
       const std::string f = next("--force value");
-      if (f == "hard") o.force = PROX_FORCE_PRESET_HARD;
-      else if (f == "soft") o.force = PROX_FORCE_PRESET_SOFT;
-      else fail("--force: '" + f + "' is not hard or soft");
+      if (f == "hard")
+        o.force = PROX_FORCE_PRESET_HARD;
+      else if (f == "soft")
+        o.force = PROX_FORCE_PRESET_SOFT;
+      else
+        fail("--force: '" + f + "' is not hard or soft");
     } else if (!a.empty() && a[0] == '-') {
       fail("unknown option '" + a + "'");
     } else {
@@ -186,9 +202,12 @@ const char* method_name(proxMethod m) { return m == PROX_METHOD_ORIGINAL ? "orig
 const char* force_name(proxForcePreset f) { return f == PROX_FORCE_PRESET_SOFT ? "soft" : "hard"; }
 const char* device_name(DeviceKind d) {
   switch (d) {
-    case DeviceKind::scripted: return "scripted";
-    case DeviceKind::mouse: return "mouse";
-    default: return "none";
+    case DeviceKind::scripted:
+      return "scripted";
+    case DeviceKind::mouse:
+      return "mouse";
+    default:
+      return "none";
   }
 }
 

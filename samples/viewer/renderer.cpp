@@ -37,7 +37,8 @@ VkShaderModule shader(VkDevice device, const uint32_t (&code)[N]) {
 
 }  // namespace
 
-Renderer::Renderer(VulkanContext& vk, VkFormat color_format, VkImageLayout final_layout, VkSampleCountFlagBits samples)
+Renderer::Renderer(VulkanContext& vk, VkFormat color_format, VkImageLayout final_layout,
+                   VkSampleCountFlagBits samples)
     : vk_(vk), samples_(samples) {
   const bool resolve = samples != VK_SAMPLE_COUNT_1_BIT;
   VkAttachmentDescription att[3] = {};
@@ -80,7 +81,8 @@ Renderer::Renderer(VulkanContext& vk, VkFormat color_format, VkImageLayout final
   deps[0].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
   deps[0].dstStageMask = attachments;
   deps[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
-                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
   deps[1].srcSubpass = 0;
   deps[1].dstSubpass = VK_SUBPASS_EXTERNAL;
   deps[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
@@ -104,7 +106,8 @@ Renderer::Renderer(VulkanContext& vk, VkFormat color_format, VkImageLayout final
   VkDescriptorSetLayoutCreateInfo set{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   set.bindingCount = 1;
   set.pBindings = &binding;
-  vk_check(vkCreateDescriptorSetLayout(vk_.device(), &set, nullptr, &set_layout_), "vkCreateDescriptorSetLayout");
+  vk_check(vkCreateDescriptorSetLayout(vk_.device(), &set, nullptr, &set_layout_),
+           "vkCreateDescriptorSetLayout");
   const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1};
   VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool.maxSets = 1;
@@ -139,7 +142,8 @@ Renderer::~Renderer() {
 
 void Renderer::create_pipelines() {
   VkDevice d = vk_.device();
-  VkPushConstantRange mesh_push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(MeshPush)};
+  VkPushConstantRange mesh_push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                                sizeof(MeshPush)};
   VkPipelineLayoutCreateInfo layout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layout.pushConstantRangeCount = 1;
   layout.pPushConstantRanges = &mesh_push;
@@ -162,8 +166,10 @@ void Renderer::create_pipelines() {
 
   const VkVertexInputBindingDescription binding{0, 3 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX};
   const VkVertexInputAttributeDescription attribute{0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0};
-  VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  VkPipelineVertexInputStateCreateInfo vertex_input{
+      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  VkPipelineInputAssemblyStateCreateInfo assembly{
+      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
   assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
   viewport.viewportCount = 1;
@@ -180,8 +186,8 @@ void Renderer::create_pipelines() {
   depth.depthWriteEnable = VK_TRUE;
   depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
   VkPipelineColorBlendAttachmentState blend_attachment{};
-  blend_attachment.colorWriteMask =
-      VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  blend_attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   blend.attachmentCount = 1;
   blend.pAttachments = &blend_attachment;
@@ -210,13 +216,16 @@ void Renderer::create_pipelines() {
   vertex_input.vertexAttributeDescriptionCount = 1;
   vertex_input.pVertexAttributeDescriptions = &attribute;
   info.layout = mesh_layout_;
-  vk_check(vkCreateGraphicsPipelines(d, VK_NULL_HANDLE, 1, &info, nullptr, &mesh_pipeline_), "vkCreateGraphicsPipelines (meshes)");
+  vk_check(vkCreateGraphicsPipelines(d, VK_NULL_HANDLE, 1, &info, nullptr, &mesh_pipeline_),
+           "vkCreateGraphicsPipelines (meshes)");
 
   stages[0].module = lines_vs;
   stages[1].module = lines_fs;
-  vertex_input = VkPipelineVertexInputStateCreateInfo{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  vertex_input =
+      VkPipelineVertexInputStateCreateInfo{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   info.layout = lines_layout_;
-  vk_check(vkCreateGraphicsPipelines(d, VK_NULL_HANDLE, 1, &info, nullptr, &lines_pipeline_), "vkCreateGraphicsPipelines (lines)");
+  vk_check(vkCreateGraphicsPipelines(d, VK_NULL_HANDLE, 1, &info, nullptr, &lines_pipeline_),
+           "vkCreateGraphicsPipelines (lines)");
 
   for (VkShaderModule m : {mesh_vs, mesh_fs, lines_vs, lines_fs}) vkDestroyShaderModule(d, m, nullptr);
 }
@@ -261,7 +270,8 @@ void Renderer::draw_mesh(VkCommandBuffer cmd, const GpuMesh& m, const glm::mat4&
   push.mvp = proj * mv;
   for (int r = 0; r < 3; ++r) push.rotation[r] = glm::vec4(mv[0][r], mv[1][r], mv[2][r], 0.0f);
   push.color = color;
-  vkCmdPushConstants(cmd, mesh_layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof push, &push);
+  vkCmdPushConstants(cmd, mesh_layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                     sizeof push, &push);
   const VkDeviceSize offset = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &m.vertices.buffer, &offset);
   vkCmdBindIndexBuffer(cmd, m.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
@@ -274,7 +284,8 @@ void Renderer::record(VkCommandBuffer cmd, VkFramebuffer fb, VkExtent2D extent, 
   reserve_lines(world + screen);
   if (world) std::memcpy(lines_.mapped, in.lines->world.data(), world * sizeof(LinePoint));
   if (screen)
-    std::memcpy(static_cast<LinePoint*>(lines_.mapped) + world, in.lines->screen.data(), screen * sizeof(LinePoint));
+    std::memcpy(static_cast<LinePoint*>(lines_.mapped) + world, in.lines->screen.data(),
+                screen * sizeof(LinePoint));
 
   VkClearValue clear[3] = {};
   clear[0].color = {{kBackground.r, kBackground.g, kBackground.b, 1.0f}};
@@ -286,7 +297,8 @@ void Renderer::record(VkCommandBuffer cmd, VkFramebuffer fb, VkExtent2D extent, 
   begin.clearValueCount = 2;
   begin.pClearValues = clear;
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
-  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height), 0.0f, 1.0f};
+  const VkViewport viewport{0.0f, 0.0f, static_cast<float>(extent.width), static_cast<float>(extent.height),
+                            0.0f, 1.0f};
   const VkRect2D scissor{{0, 0}, extent};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);

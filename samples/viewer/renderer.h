@@ -30,7 +30,8 @@ class Renderer {
  public:
   // final_layout: where the target's image is left (transfer source for a
   // read-back, present source for a swapchain).
-  Renderer(VulkanContext& vk, VkFormat color_format, VkImageLayout final_layout, VkSampleCountFlagBits samples);
+  Renderer(VulkanContext& vk, VkFormat color_format, VkImageLayout final_layout,
+           VkSampleCountFlagBits samples);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;

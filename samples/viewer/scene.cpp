@@ -39,7 +39,8 @@ std::vector<proxPose> read_path(const std::string& path) {
   char line[1024];
   while (std::fgets(line, sizeof line, f)) {
     double v[7];
-    if (std::sscanf(line, "%lf %lf %lf %lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6]) == 7)
+    if (std::sscanf(line, "%lf %lf %lf %lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], &v[6]) ==
+        7)
       poses.push_back({{v[0], v[1], v[2]}, {v[3], v[4], v[5], v[6]}});
   }
   std::fclose(f);
@@ -159,7 +160,8 @@ double Scene::x_at_gap(double gap) const {
   check(proxMesh_GetInfo(mesh_a_, &a));
   check(proxMesh_GetInfo(mesh_b_, &b));
   auto diagonal = [](const proxMeshInfo& i) {
-    return std::hypot(i.boundsMax.x - i.boundsMin.x, i.boundsMax.y - i.boundsMin.y, i.boundsMax.z - i.boundsMin.z);
+    return std::hypot(i.boundsMax.x - i.boundsMin.x, i.boundsMax.y - i.boundsMin.y,
+                      i.boundsMax.z - i.boundsMin.z);
   };
   double lo = 0.0, hi = diagonal(a) + diagonal(b) + gap;
   for (int i = 0; i < 100 && hi - lo > 1e-12 * hi; ++i) {
@@ -190,7 +192,8 @@ void Scene::update(FrameData& frame, bool polylines) const {
     // Local tracking may have found more since the size was asked: take what fits.
     r = proxBody_GetContacts(tool_, frame.contacts.data(), count, &count);
     if (r != PROX_ERROR_CAPACITY) check(r);
-    frame.contacts.resize(static_cast<std::size_t>(std::min<int32_t>(count, static_cast<int32_t>(frame.contacts.size()))));
+    frame.contacts.resize(
+        static_cast<std::size_t>(std::min<int32_t>(count, static_cast<int32_t>(frame.contacts.size()))));
   }
   check(proxBody_GetWrench(tool_, &frame.wrench));
 
@@ -226,10 +229,13 @@ void Scene::update(FrameData& frame, bool polylines) const {
   }
 
   frame.threads = threads_;
-  for (int t = 0; t < 3; ++t) check(proxWorld_GetThreadStats(world_, static_cast<proxThread>(t), &frame.thread_stats[t]));
+  for (int t = 0; t < 3; ++t)
+    check(proxWorld_GetThreadStats(world_, static_cast<proxThread>(t), &frame.thread_stats[t]));
 }
 
-void Scene::push_tool_pose(const proxPose& pose) { check(proxStreamDevice_PushPose(stream_, &pose, proxGetTime())); }
+void Scene::push_tool_pose(const proxPose& pose) {
+  check(proxStreamDevice_PushPose(stream_, &pose, proxGetTime()));
+}
 
 bool Scene::stream_stats(proxStreamDeviceStats* stats) const {
   if (stream_.index1 == 0) return false;
@@ -250,9 +256,8 @@ std::vector<double> Scene::force_shares(const std::vector<proxContact>& contacts
     const double d = std::max(c.distance, force_.safetyDistance);
     double f = 0.0;
     if (d < cutoff_) {
-      f = force_.curve == PROX_FORCE_LINEAR
-              ? (cutoff_ - d) / (cutoff_ - force_.safetyDistance)
-              : std::exp(-(d - force_.safetyDistance) / force_.decayLength);
+      f = force_.curve == PROX_FORCE_LINEAR ? (cutoff_ - d) / (cutoff_ - force_.safetyDistance)
+                                            : std::exp(-(d - force_.safetyDistance) / force_.decayLength);
     }
     w.push_back(f);
     sum += f;

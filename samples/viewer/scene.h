@@ -28,14 +28,14 @@ struct Polyline {
 // What one frame shows, read from the world in update().
 struct FrameData {
   glm::dmat4 model_a{1.0}, model_tool{1.0};  // body to world
-  glm::dvec3 reference_point{0.0};            // the tool's, world: where the force is drawn
+  glm::dvec3 reference_point{0.0};           // the tool's, world: where the force is drawn
   std::vector<proxContact> contacts;
   std::vector<Polyline> polylines;
   bool polylines_valid = false;  // computed at polylines_pose: kept while the tool stays there
   proxPose polylines_pose{};
   proxWrench wrench{};
-  bool threads = false;                      // the world's threads run (else it was stepped)
-  proxThreadStats thread_stats[3]{};         // haptic, local, global
+  bool threads = false;               // the world's threads run (else it was stepped)
+  proxThreadStats thread_stats[3]{};  // haptic, local, global
 };
 
 class Scene {

@@ -53,7 +53,8 @@ OffscreenTarget::OffscreenTarget(VulkanContext& vk, const Renderer& renderer, Vk
                              VK_IMAGE_ASPECT_COLOR_BIT)),
       attachments_(vk, kOffscreenFormat, extent, renderer.samples()),
       framebuffer_(attachments_.framebuffer(renderer.render_pass(), image_.view, extent)),
-      readback_(vk.create_buffer(VkDeviceSize{4} * extent.width * extent.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT)) {}
+      readback_(vk.create_buffer(VkDeviceSize{4} * extent.width * extent.height,
+                                 VK_BUFFER_USAGE_TRANSFER_DST_BIT)) {}
 
 OffscreenTarget::~OffscreenTarget() {
   vkDeviceWaitIdle(vk_.device());
@@ -73,8 +74,8 @@ void OffscreenTarget::record_readback(VkCommandBuffer cmd) {
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.buffer = readback_.buffer;
   barrier.size = VK_WHOLE_SIZE;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &barrier, 0,
-                       nullptr);
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1,
+                       &barrier, 0, nullptr);
 }
 
 std::vector<uint8_t> OffscreenTarget::rgb() const {
@@ -88,7 +89,8 @@ std::vector<uint8_t> OffscreenTarget::rgb() const {
 SwapchainTarget::SwapchainTarget(VulkanContext& vk, VkSurfaceKHR surface, VkExtent2D extent)
     : vk_(vk), surface_(surface), extent_(extent) {
   uint32_t n = 0;
-  vk_check(vkGetPhysicalDeviceSurfaceFormatsKHR(vk.physical(), surface, &n, nullptr), "vkGetPhysicalDeviceSurfaceFormatsKHR");
+  vk_check(vkGetPhysicalDeviceSurfaceFormatsKHR(vk.physical(), surface, &n, nullptr),
+           "vkGetPhysicalDeviceSurfaceFormatsKHR");
   std::vector<VkSurfaceFormatKHR> formats(n);
   vk_check(vkGetPhysicalDeviceSurfaceFormatsKHR(vk.physical(), surface, &n, formats.data()),
            "vkGetPhysicalDeviceSurfaceFormatsKHR");
@@ -174,7 +176,8 @@ void SwapchainTarget::create(const Renderer& renderer, VkExtent2D extent) {
 }
 
 bool SwapchainTarget::acquire(VkFramebuffer* fb) {
-  const VkResult r = vkAcquireNextImageKHR(vk_.device(), swapchain_, UINT64_MAX, acquired_, VK_NULL_HANDLE, &index_);
+  const VkResult r =
+      vkAcquireNextImageKHR(vk_.device(), swapchain_, UINT64_MAX, acquired_, VK_NULL_HANDLE, &index_);
   if (r == VK_ERROR_OUT_OF_DATE_KHR) return false;
   if (r != VK_SUBOPTIMAL_KHR) vk_check(r, "vkAcquireNextImageKHR");
   *fb = framebuffers_[index_];

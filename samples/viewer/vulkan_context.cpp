@@ -11,8 +11,8 @@ namespace {
 std::atomic<int> g_validation_messages{0};
 
 VKAPI_ATTR VkBool32 VKAPI_CALL on_validation(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                             VkDebugUtilsMessageTypeFlagsEXT, const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                             void*) {
+                                             VkDebugUtilsMessageTypeFlagsEXT,
+                                             const VkDebugUtilsMessengerCallbackDataEXT* data, void*) {
   ++g_validation_messages;
   std::fprintf(stderr, "proxima-viewer: validation %s: %s\n",
                (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT) ? "error" : "warning",
@@ -32,24 +32,36 @@ bool has_layer(const char* name) {
 
 const char* result_name(VkResult r) {
   switch (r) {
-    case VK_ERROR_OUT_OF_HOST_MEMORY: return "VK_ERROR_OUT_OF_HOST_MEMORY";
-    case VK_ERROR_OUT_OF_DEVICE_MEMORY: return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
-    case VK_ERROR_INITIALIZATION_FAILED: return "VK_ERROR_INITIALIZATION_FAILED";
-    case VK_ERROR_DEVICE_LOST: return "VK_ERROR_DEVICE_LOST";
-    case VK_ERROR_LAYER_NOT_PRESENT: return "VK_ERROR_LAYER_NOT_PRESENT";
-    case VK_ERROR_EXTENSION_NOT_PRESENT: return "VK_ERROR_EXTENSION_NOT_PRESENT";
-    case VK_ERROR_FEATURE_NOT_PRESENT: return "VK_ERROR_FEATURE_NOT_PRESENT";
-    case VK_ERROR_INCOMPATIBLE_DRIVER: return "VK_ERROR_INCOMPATIBLE_DRIVER (no Vulkan driver)";
-    case VK_ERROR_SURFACE_LOST_KHR: return "VK_ERROR_SURFACE_LOST_KHR";
-    case VK_ERROR_OUT_OF_DATE_KHR: return "VK_ERROR_OUT_OF_DATE_KHR";
-    default: return "an error";
+    case VK_ERROR_OUT_OF_HOST_MEMORY:
+      return "VK_ERROR_OUT_OF_HOST_MEMORY";
+    case VK_ERROR_OUT_OF_DEVICE_MEMORY:
+      return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
+    case VK_ERROR_INITIALIZATION_FAILED:
+      return "VK_ERROR_INITIALIZATION_FAILED";
+    case VK_ERROR_DEVICE_LOST:
+      return "VK_ERROR_DEVICE_LOST";
+    case VK_ERROR_LAYER_NOT_PRESENT:
+      return "VK_ERROR_LAYER_NOT_PRESENT";
+    case VK_ERROR_EXTENSION_NOT_PRESENT:
+      return "VK_ERROR_EXTENSION_NOT_PRESENT";
+    case VK_ERROR_FEATURE_NOT_PRESENT:
+      return "VK_ERROR_FEATURE_NOT_PRESENT";
+    case VK_ERROR_INCOMPATIBLE_DRIVER:
+      return "VK_ERROR_INCOMPATIBLE_DRIVER (no Vulkan driver)";
+    case VK_ERROR_SURFACE_LOST_KHR:
+      return "VK_ERROR_SURFACE_LOST_KHR";
+    case VK_ERROR_OUT_OF_DATE_KHR:
+      return "VK_ERROR_OUT_OF_DATE_KHR";
+    default:
+      return "an error";
   }
 }
 
 }  // namespace
 
 void vk_check(VkResult r, const char* what) {
-  if (r != VK_SUCCESS) throw VulkanError(std::string(what) + " failed: " + result_name(r) + " (" + std::to_string(r) + ")");
+  if (r != VK_SUCCESS)
+    throw VulkanError(std::string(what) + " failed: " + result_name(r) + " (" + std::to_string(r) + ")");
 }
 
 int VulkanContext::validation_messages() { return g_validation_messages.load(); }
@@ -59,8 +71,9 @@ VulkanContext::VulkanContext(const std::vector<const char*>& window_extensions, 
   std::vector<const char*> layers;
   if (validation) {
     if (!has_layer("VK_LAYER_KHRONOS_validation"))
-      throw VulkanError("--validation: the layer VK_LAYER_KHRONOS_validation is not installed "
-                        "(Debian: vulkan-validationlayers)");
+      throw VulkanError(
+          "--validation: the layer VK_LAYER_KHRONOS_validation is not installed "
+          "(Debian: vulkan-validationlayers)");
     layers.push_back("VK_LAYER_KHRONOS_validation");
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   }
@@ -71,10 +84,12 @@ VulkanContext::VulkanContext(const std::vector<const char*>& window_extensions, 
   VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
   messenger.messageSeverity =
       VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+  messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                          VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                           VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
   messenger.pfnUserCallback = on_validation;
-  const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  const VkValidationFeatureEnableEXT enables[] = {
+      VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
   VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
   features.enabledValidationFeatureCount = 1;
   features.pEnabledValidationFeatures = enables;
@@ -147,9 +162,12 @@ void VulkanContext::pick_device(VkSurfaceKHR surface, VkSampleCountFlagBits samp
       }
       const bool cpu = p.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
       int score = 1;
-      if (!surface) score = cpu ? 3 : 2;
-      else if (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU) score = 4;
-      else if (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU) score = 3;
+      if (!surface)
+        score = cpu ? 3 : 2;
+      else if (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU)
+        score = 4;
+      else if (p.deviceType == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU)
+        score = 3;
       if (score > best_score) {
         best_score = score;
         physical_ = d;
@@ -160,9 +178,10 @@ void VulkanContext::pick_device(VkSurfaceKHR surface, VkSampleCountFlagBits samp
     }
   }
   if (!physical_) {
-    throw VulkanError(std::string("no usable Vulkan device") + (surface ? " that can present to the window" : "") +
-                      (devices.empty() ? " (none found: Debian's mesa-vulkan-drivers gives the CPU driver, lavapipe)"
-                                       : ":" + refused));
+    throw VulkanError(
+        std::string("no usable Vulkan device") + (surface ? " that can present to the window" : "") +
+        (devices.empty() ? " (none found: Debian's mesa-vulkan-drivers gives the CPU driver, lavapipe)"
+                         : ":" + refused));
   }
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
 
@@ -195,7 +214,8 @@ void VulkanContext::pick_device(VkSurfaceKHR surface, VkSampleCountFlagBits samp
   vk_check(vkCreateFence(device_, &fence, nullptr, &fence_), "vkCreateFence");
 }
 
-uint32_t VulkanContext::memory_type(uint32_t bits, VkMemoryPropertyFlags want, VkMemoryPropertyFlags fallback) const {
+uint32_t VulkanContext::memory_type(uint32_t bits, VkMemoryPropertyFlags want,
+                                    VkMemoryPropertyFlags fallback) const {
   for (VkMemoryPropertyFlags flags : {want, fallback})
     for (uint32_t i = 0; i < memory_.memoryTypeCount; ++i)
       if ((bits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & flags) == flags) return i;
@@ -213,7 +233,8 @@ Buffer VulkanContext::create_buffer(VkDeviceSize size, VkBufferUsageFlags usage)
   vkGetBufferMemoryRequirements(device_, b.buffer, &req);
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = req.size;
-  const VkMemoryPropertyFlags host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  const VkMemoryPropertyFlags host =
+      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
   alloc.memoryTypeIndex = memory_type(req.memoryTypeBits, host, host);
   vk_check(vkAllocateMemory(device_, &alloc, nullptr, &b.memory), "vkAllocateMemory");
   vk_check(vkBindBufferMemory(device_, b.buffer, b.memory, 0), "vkBindBufferMemory");

@@ -57,8 +57,8 @@ class VulkanContext {
 
   Buffer create_buffer(VkDeviceSize size, VkBufferUsageFlags usage);
   void destroy(Buffer& b);
-  Image create_image(VkFormat format, VkExtent2D extent, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
-                     VkImageAspectFlags aspect);
+  Image create_image(VkFormat format, VkExtent2D extent, VkSampleCountFlagBits samples,
+                     VkImageUsageFlags usage, VkImageAspectFlags aspect);
   void destroy(Image& i);
 
   // One primary command buffer and its fence, for the frame.
