@@ -316,6 +316,27 @@ class ViewerRunTest(unittest.TestCase):
             self.assertIn(0, counts)
             self.assertGreater(max(counts), 0, counts)
 
+    def test_method_and_force_reach_the_world(self):
+        def scene(pose, method, force):
+            with tempfile.TemporaryDirectory() as d:
+                bunny = os.path.join(ASSETS, "bunny.obj")
+                r = run(bunny, bunny, "--pose-b", *pose, "--method", method, "--force", force, "--cutoff", "0.01",
+                        "--headless", "--validation", "--size", "160x90", "--show", "none", "--out", d)
+                self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+                with open(os.path.join(d, "frame-0000.json")) as f:
+                    s = json.load(f)
+                return len(s["contacts"]), math.hypot(*s["force"])
+
+        # The near scene's 8 LMDs within 10 mm (precise); the original method's 7 x 7 samples find others.
+        precise, original = scene(NEAR, "precise", "hard"), scene(NEAR, "original", "hard")
+        self.assertEqual(precise[0], 8)
+        self.assertGreater(original[0], 0)
+        self.assertNotEqual(original, precise)
+        # 1 mm apart: soft (full force inside 2 mm) renders the 3 N maximum; hard (safety 0.3 mm, decay
+        # 0.3 mm) e^-(0.7/0.3) of it per contact.
+        self.assertAlmostEqual(scene(SIDE, "precise", "soft")[1], 3.0, places=6)
+        self.assertLess(scene(SIDE, "precise", "hard")[1], 1.0)
+
     def test_bad_input_gets_a_clear_error(self):
         bunny = os.path.join(ASSETS, "bunny.obj")
         with tempfile.TemporaryDirectory() as d:
