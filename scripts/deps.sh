@@ -20,9 +20,9 @@ CORE_PACKAGES=(g++ cmake ninja-build libglm-dev libgtest-dev
 # The Vulkan viewer (samples/viewer, docs/viewer.md) and its tests: the
 # loader and headers, lavapipe (the CPU driver), the shader compiler, GLFW,
 # libpng, the validation layers, ImGui for the HUD's text, and Xvfb with
-# xwd and xdotool for the windowed test.
+# xwd, xdotool and umockdev (an emulated gamepad) for the windowed test.
 VIEWER_PACKAGES=(libvulkan-dev mesa-vulkan-drivers glslang-tools libglfw3-dev libpng-dev
-  vulkan-validationlayers libimgui-dev libstb-dev xvfb xauth x11-apps xdotool)
+  vulkan-validationlayers libimgui-dev libstb-dev xvfb xauth x11-apps xdotool umockdev)
 
 # The scene benchmark's peers and plots (scripts/bench.sh): FCL to measure
 # against (never a dependency of the SDK) and a venv for matplotlib.

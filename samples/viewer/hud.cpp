@@ -45,9 +45,10 @@ void add_hud(DrawList& list, const HudState& hud) {
   square(list, 6, 0,
          hud.method == PROX_METHOD_ORIGINAL ? glm::vec4(1.0f, 0.55f, 0.1f, 1.0f)
                                             : glm::vec4(0.3f, 0.5f, 1.0f, 1.0f));
-  const glm::vec4 device = hud.device == DeviceKind::scripted ? glm::vec4(0.6f, 0.4f, 0.9f, 1.0f)
-                           : hud.device == DeviceKind::mouse  ? glm::vec4(0.2f, 0.8f, 0.7f, 1.0f)
-                                                              : glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+  const glm::vec4 device = hud.device == DeviceKind::scripted  ? glm::vec4(0.6f, 0.4f, 0.9f, 1.0f)
+                           : hud.device == DeviceKind::mouse   ? glm::vec4(0.2f, 0.8f, 0.7f, 1.0f)
+                           : hud.device == DeviceKind::gamepad ? glm::vec4(0.9f, 0.9f, 0.3f, 1.0f)
+                                                               : glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
   square(list, 6, 1, device);
 }
 

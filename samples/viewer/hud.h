@@ -24,7 +24,7 @@ struct HudState {
 // and global threads' achieved rate (full at the target; global full at
 // 100 Hz), the LMD count (log scale, full at 1000), |force| (full at the
 // maximum). Then two squares: the method (blue precise, orange original)
-// and the device (grey none, violet scripted, teal mouse).
+// and the device (grey none, violet scripted, teal mouse, yellow gamepad).
 void add_hud(DrawList& list, const HudState& hud);
 
 }  // namespace viewer

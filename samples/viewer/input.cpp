@@ -2,6 +2,8 @@
 
 #include <GLFW/glfw3.h>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <cmath>
 
 namespace viewer {
@@ -74,6 +76,40 @@ void on_key(GLFWwindow* w, int key, int, int action, int) {
 }
 
 }  // namespace
+
+int find_gamepad() {
+  for (int jid = GLFW_JOYSTICK_1; jid <= GLFW_JOYSTICK_LAST; ++jid)
+    if (glfwJoystickIsGamepad(jid)) return jid;
+  return -1;
+}
+
+bool apply_gamepad(int gamepad, const Camera& camera, double seconds, proxPose* pose) {
+  GLFWgamepadstate state;
+  if (gamepad < 0 || !glfwGetGamepadState(gamepad, &state)) return false;
+  auto axis = [&](int a) {
+    const double v = state.axes[a];
+    return std::abs(v) < 0.15 ? 0.0 : (v - std::copysign(0.15, v)) / 0.85;
+  };
+  auto trigger = [&](int a) { return std::max(0.0, 0.5 * (static_cast<double>(state.axes[a]) + 1.0)); };
+  const glm::dvec3 forward = glm::normalize(camera.target - camera.eye());
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(0.0, 1.0, 0.0)));
+  const glm::dvec3 up = glm::cross(right, forward);
+  const double speed = 0.5 * camera.scene_radius * seconds, turn = seconds;
+  // GLFW's y axes point down when pushed forward: forward is up on the screen.
+  const glm::dvec3 move =
+      speed *
+      (axis(GLFW_GAMEPAD_AXIS_LEFT_X) * right - axis(GLFW_GAMEPAD_AXIS_LEFT_Y) * up +
+       (trigger(GLFW_GAMEPAD_AXIS_RIGHT_TRIGGER) - trigger(GLFW_GAMEPAD_AXIS_LEFT_TRIGGER)) * forward);
+  pose->position.x += move.x;
+  pose->position.y += move.y;
+  pose->position.z += move.z;
+  const glm::dquat spin = glm::angleAxis(turn * axis(GLFW_GAMEPAD_AXIS_RIGHT_X), up) *
+                          glm::angleAxis(turn * axis(GLFW_GAMEPAD_AXIS_RIGHT_Y), right);
+  const glm::dquat q = glm::normalize(
+      spin * glm::dquat(pose->rotation.w, pose->rotation.x, pose->rotation.y, pose->rotation.z));
+  pose->rotation = {q.w, q.x, q.y, q.z};
+  return true;
+}
 
 void attach_input(GLFWwindow* window, Input* input) {
   glfwSetWindowUserPointer(window, input);

@@ -29,4 +29,15 @@ struct Input {
 // Installs the callbacks; `input` must outlive the window.
 void attach_input(GLFWwindow* window, Input* input);
 
+// The first joystick GLFW knows as a gamepad (it has a mapping), or -1.
+// GLFW must be initialised.
+int find_gamepad();
+
+// Applies a gamepad's sticks and triggers for `seconds` to a tool pose: the
+// left stick moves it in the view plane, the triggers along the view (right
+// in, left out), the right stick turns it about the view's up and right
+// axes. Full deflection: half the scene's radius and one radian a second;
+// a dead zone of 0.15 around rest. False when the gamepad is gone.
+bool apply_gamepad(int gamepad, const Camera& camera, double seconds, proxPose* pose);
+
 }  // namespace viewer

@@ -85,14 +85,6 @@ class Viewer {
   explicit Viewer(const Options& o) : options_(o), show_(o.show), tool_target_(o.pose_b) {
     path_a_ = o.mesh_a.empty() ? default_asset("bunny.obj") : o.mesh_a;
     path_b_ = o.mesh_b.empty() ? path_a_ : o.mesh_b;
-    scene_ = std::make_unique<Scene>(options_, path_a_, path_b_);
-    mesh_a_ = read_render_mesh(path_a_);
-    if (path_b_ != path_a_) mesh_b_ = read_render_mesh(path_b_);
-    if (!o.out_dir.empty()) {
-      std::error_code ec;
-      std::filesystem::create_directories(o.out_dir, ec);
-      if (ec) throw std::runtime_error(o.out_dir + ": cannot create the directory (" + ec.message() + ")");
-    }
   }
   const RenderMesh& mesh_tool() const { return path_b_ == path_a_ ? mesh_a_ : mesh_b_; }
 
@@ -100,6 +92,19 @@ class Viewer {
   int run_window();
 
  private:
+  // The world and the meshes to draw; in a window once GLFW can say whether
+  // a gamepad is there.
+  void build_scene() {
+    scene_ = std::make_unique<Scene>(options_, path_a_, path_b_);
+    mesh_a_ = read_render_mesh(path_a_);
+    if (path_b_ != path_a_) mesh_b_ = read_render_mesh(path_b_);
+    if (!options_.out_dir.empty()) {
+      std::error_code ec;
+      std::filesystem::create_directories(options_.out_dir, ec);
+      if (ec)
+        throw std::runtime_error(options_.out_dir + ": cannot create the directory (" + ec.message() + ")");
+    }
+  }
   // Reads the scene and builds what the frame draws.
   FrameInput prepare(VkExtent2D extent) {
     scene_->update(frame_, show_.polylines || !options_.out_dir.empty());
@@ -157,9 +162,11 @@ class Viewer {
     proxStreamDeviceStats stream;
     if (scene_->stream_stats(&stream)) {
       const proxPose p = scene_->tool_pose();
-      std::printf("proxima-viewer: mouse device: %llu poses pushed, tool at %.6f %.6f %.6f\n",
-                  static_cast<unsigned long long>(stream.samplesPushed), p.position.x, p.position.y,
-                  p.position.z);
+      std::printf(
+          "proxima-viewer: %s device: %llu poses pushed, tool at %.6f %.6f %.6f, turned %.6f %.6f %.6f "
+          "%.6f\n",
+          device_name(options_.device_kind), static_cast<unsigned long long>(stream.samplesPushed),
+          p.position.x, p.position.y, p.position.z, p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z);
     }
     const int messages = VulkanContext::validation_messages();
     if (messages > 0) {
@@ -172,7 +179,8 @@ class Viewer {
 
   Options options_;
   Show show_;
-  proxPose tool_target_;  // where the mouse has taken the tool (the mouse device)
+  proxPose tool_target_;  // where the mouse or the gamepad has taken the tool
+  Clock::time_point last_input_ = Clock::now();
   std::string path_a_, path_b_;
   std::unique_ptr<Scene> scene_;
   RenderMesh mesh_a_, mesh_b_;
@@ -203,6 +211,7 @@ VkSampleCountFlagBits samples_of(int msaa) {
 }
 
 int Viewer::run_headless() {
+  build_scene();
   const VkExtent2D extent{static_cast<uint32_t>(options_.width), static_cast<uint32_t>(options_.height)};
   VulkanContext vk({}, options_.validation);
   vk.pick_device(VK_NULL_HANDLE, samples_of(options_.msaa));
@@ -248,6 +257,13 @@ int Viewer::run_window() {
     ~Terminate() { glfwTerminate(); }
   } terminate;
   if (!glfwVulkanSupported()) throw VulkanError("GLFW finds no Vulkan loader or driver for a window");
+  int gamepad = find_gamepad();
+  if (options_.device == "auto" && gamepad >= 0) options_.device_kind = DeviceKind::gamepad;
+  if (options_.device_kind == DeviceKind::gamepad && gamepad < 0)
+    throw std::runtime_error("--device gamepad: no gamepad is connected (GLFW maps none)");
+  if (options_.device_kind == DeviceKind::gamepad)
+    std::printf("proxima-viewer: gamepad %s\n", glfwGetGamepadName(gamepad));
+  build_scene();
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
   GLFWwindow* window = glfwCreateWindow(options_.width, options_.height, "proxima-viewer", nullptr, nullptr);
   if (!window) throw std::runtime_error("cannot open a window: " + glfw_error());
@@ -299,8 +315,16 @@ int Viewer::run_window() {
         tool_target_.position.y += input.tool_drag.y;
         tool_target_.position.z += input.tool_drag.z;
         input.tool_drag = glm::dvec3(0.0);
-        scene_->push_tool_pose(tool_target_);  // every frame: a silent stream fades the force out
       }
+      if (options_.device_kind == DeviceKind::gamepad) {
+        const Clock::time_point now = Clock::now();
+        const double seconds = std::min(0.1, std::chrono::duration<double>(now - last_input_).count());
+        last_input_ = now;
+        if (!apply_gamepad(gamepad, camera_, seconds, &tool_target_))
+          gamepad = find_gamepad();  // unplugged: hold
+      }
+      if (input.mouse_device || options_.device_kind == DeviceKind::gamepad)
+        scene_->push_tool_pose(tool_target_);  // every frame: a silent stream fades the force out
       glfwGetFramebufferSize(window, &w, &h);
       if (w == 0 || h == 0) {  // minimised
         glfwWaitEvents();

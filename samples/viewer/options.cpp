@@ -22,13 +22,15 @@ const char* const kUsage =
     "preset's)\n"
     "  --method precise|original       the improved method or the Johnson-Cohen baseline (default precise)\n"
     "  --force hard|soft               force settings (docs/cli.md; default hard)\n"
-    "  --device auto|scripted|mouse    what drives the tool:\n"
+    "  --device auto|scripted|mouse|gamepad  what drives the tool:\n"
     "                                    scripted: the scripted device along path T (approach, hold,\n"
     "                                    retreat, looped) or along --poses\n"
-    "                                    mouse: right-drag moves the tool in the view plane, through the\n"
-    "                                    streamed device (window only)\n"
-    "                                    auto: mouse in a window, scripted headless (the hidapi and\n"
-    "                                    gamepad devices are not in this version)\n"
+    "                                    mouse: right-drag moves the tool in the view plane\n"
+    "                                    gamepad: the left stick moves it in the view plane, the\n"
+    "                                    triggers along the view, the right stick turns it\n"
+    "                                    (mouse and gamepad through the streamed device; window only)\n"
+    "                                    auto: in a window a gamepad if one is connected, else the\n"
+    "                                    mouse; headless scripted (no hidapi device in this version)\n"
     "                                  default: scripted without meshes; with A and B the tool stays put\n"
     "  --poses FILE                    the scripted device's path: one pose per line, tx ty tz qw qx qy qz\n"
     "  --seconds S                     path T: the time of each leg; --poses: of the whole path (default 4)\n"
@@ -145,10 +147,10 @@ Options parse_options(int argc, char** argv, bool* help) {
       o.validation = true;
     } else if (a == "--device") {
       o.device = next("--device value");
-      if (o.device == "hid" || o.device == "gamepad")
-        fail("--device " + o.device + ": not in this version of the viewer (use scripted, mouse or auto)");
-      if (o.device != "auto" && o.device != "scripted" && o.device != "mouse")
-        fail("--device: '" + o.device + "' is not auto, scripted or mouse");
+      if (o.device == "hid")
+        fail("--device hid: not in this version of the viewer (use scripted, mouse, gamepad or auto)");
+      if (o.device != "auto" && o.device != "scripted" && o.device != "mouse" && o.device != "gamepad")
+        fail("--device: '" + o.device + "' is not auto, scripted, mouse or gamepad");
     } else if (a == "--poses") {
       o.poses_file = next("--poses file");
     } else if (a == "--seconds") {
@@ -186,12 +188,13 @@ Options parse_options(int argc, char** argv, bool* help) {
   if (o.device.empty()) {
     o.device_kind = o.mesh_a.empty() || !o.poses_file.empty() ? DeviceKind::scripted : DeviceKind::none;
   } else if (o.device == "auto") {
+    // In a window the viewer looks for a gamepad once GLFW is up (main.cpp).
     o.device_kind = o.headless ? DeviceKind::scripted : DeviceKind::mouse;
   } else if (o.device == "scripted") {
     o.device_kind = DeviceKind::scripted;
   } else {
-    if (o.headless) fail("--device mouse needs a window (drop --headless)");
-    o.device_kind = DeviceKind::mouse;
+    if (o.headless) fail("--device " + o.device + " needs a window (drop --headless)");
+    o.device_kind = o.device == "mouse" ? DeviceKind::mouse : DeviceKind::gamepad;
   }
   if (!o.poses_file.empty() && o.device_kind != DeviceKind::scripted)
     fail("--poses is the scripted device's path: it needs --device scripted");
@@ -206,6 +209,8 @@ const char* device_name(DeviceKind d) {
       return "scripted";
     case DeviceKind::mouse:
       return "mouse";
+    case DeviceKind::gamepad:
+      return "gamepad";
     default:
       return "none";
   }

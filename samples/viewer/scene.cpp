@@ -115,7 +115,7 @@ void Scene::build(const Options& options, const std::string& path_a, const std::
     proxDeviceDef device_def;
     check(proxScriptedDevice_GetDeviceDef(device, &device_def));
     check(proxBody_SetDevice(tool_, &device_def));
-  } else if (options.device_kind == DeviceKind::mouse) {
+  } else if (options.device_kind == DeviceKind::mouse || options.device_kind == DeviceKind::gamepad) {
     // The streamed device (docs/devices.md), fed once a frame. A software
     // renderer's frames can take 50 ms or more: one frame of interpolation
     // delay at 30 Hz, and silence only after half a second.

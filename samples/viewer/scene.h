@@ -52,10 +52,10 @@ class Scene {
   // polylines only when asked, as they are computed on the call, and only
   // when the tool has moved since they were.
   void update(FrameData& frame, bool polylines) const;
-  // The mouse device: hands the streamed device holding the tool where the
-  // mouse has taken it, now (once a frame).
+  // The mouse and gamepad devices: hands the streamed device holding the
+  // tool where the input has taken it, now (once a frame).
   void push_tool_pose(const proxPose& pose);
-  // What the streamed device saw; false when the mouse does not drive the tool.
+  // What the streamed device saw; false when no streamed device drives the tool.
   bool stream_stats(proxStreamDeviceStats* stats) const;
   proxPose tool_pose() const;
 
@@ -75,7 +75,7 @@ class Scene {
   proxBodyId a_{}, tool_{};
   proxMeshId mesh_a_{}, mesh_b_{};
   bool threads_ = false;
-  proxStreamDeviceId stream_{};  // the mouse device
+  proxStreamDeviceId stream_{};  // the mouse or gamepad device
   double cutoff_ = 0.0;
   proxForceSettings force_{};
   glm::dvec3 reference_local_{0.0};

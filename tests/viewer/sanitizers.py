@@ -22,7 +22,8 @@ def environment(viewer, base=None):
         if not keep or not os.path.exists(keep):
             raise RuntimeError("the viewer is built with AddressSanitizer: set PROX_VIEWER_KEEP_LOADED to the "
                                "proxima_viewer_keep_loaded library (ctest does)")
-        env["LD_PRELOAD"] = asan.group(1) + " " + keep
+        # umockdev-run's own preload, if any, after these.
+        env["LD_PRELOAD"] = " ".join(p for p in (asan.group(1), keep, env.get("LD_PRELOAD", "")) if p)
         options = env.get("LSAN_OPTIONS", "")
         env["LSAN_OPTIONS"] = ((options + ":") if options else "") + "print_suppressions=0:suppressions=" + \
             os.path.join(HERE, "lsan.supp")

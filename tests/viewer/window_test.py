@@ -9,7 +9,10 @@ Then a left-drag in the window (xdotool) must orbit the camera: a second
 screenshot shows the scene from elsewhere, and after a resize the window
 is drawn whole at its new size. And with --device mouse, a
 right-drag moves the tool through the streamed device, along the view's
-right axis, and the M key switches the method.
+right axis, and the M key switches the method. Under umockdev an emulated
+Xbox 360 pad (gamepad.py) with its left stick held right is found by
+--device auto and moves the tool the same way; without one, --device
+gamepad is refused.
 
 Needs xvfb-run, xauth, xwd and xdotool (Debian: xvfb, xauth, x11-apps,
 xdotool).
@@ -26,6 +29,7 @@ import time
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gamepad  # noqa: E402
 import png  # noqa: E402
 import sanitizers  # noqa: E402
 import xwd  # noqa: E402
@@ -80,6 +84,30 @@ def capture_mouse(out_dir):
     sys.exit(viewer.returncode)
 
 
+def capture_gamepad(out_dir):
+    """Inside Xvfb and umockdev: --device auto finds the emulated pad, whose left stick is held right."""
+    viewer = subprocess.Popen([VIEWER, *mouse_args(), "--device", "auto"], stdout=subprocess.PIPE,
+                              stderr=subprocess.PIPE, text=True, env=sanitizers.environment(VIEWER))
+    first = viewer.stdout.readline()
+    line = viewer.stdout.readline()
+    if "presenting" in line:
+        time.sleep(1.5)
+    viewer.send_signal(signal.SIGTERM)
+    out, err = viewer.communicate(timeout=60)
+    with open(os.path.join(out_dir, "gamepad.log"), "w") as f:
+        f.write(first + line + out + err)
+    sys.exit(viewer.returncode)
+
+
+def capture_no_gamepad(out_dir):
+    """Inside Xvfb, no gamepad: --device gamepad must refuse to start."""
+    r = subprocess.run([VIEWER, *mouse_args(), "--device", "gamepad", "--frames", "1"], capture_output=True,
+                       text=True, timeout=300, env=sanitizers.environment(VIEWER))
+    with open(os.path.join(out_dir, "no-gamepad.log"), "w") as f:
+        f.write(f"exit {r.returncode}\n" + r.stdout + r.stderr)
+    sys.exit(0)
+
+
 def capture(out_dir):
     """Inside Xvfb: open the window, wait for frames, dump the screen, quit."""
     viewer = subprocess.Popen([VIEWER, *scene_args()], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
@@ -125,7 +153,7 @@ class WindowTest(unittest.TestCase):
                     log = f.read()
             self.assertEqual(r.returncode, 0, r.stdout + r.stderr + log)
             self.assertNotRegex(log, VALIDATION)
-            m = re.search(r"mouse device: (\d+) poses pushed, tool at (\S+) (\S+) (\S+)", log)
+            m = re.search(r"mouse device: (\d+) poses pushed, tool at (\S+) (\S+) (\S+),", log)
             self.assertIsNotNone(m, log)
             self.assertGreater(int(m.group(1)), 5, log)
             self.assertIn("method original, force hard", log)
@@ -142,6 +170,49 @@ class WindowTest(unittest.TestCase):
         across = abs(sum(a * b for a, b in zip(moved, up)))
         self.assertGreater(along, 0.01, f"the tool moved by {moved}, not to the right")
         self.assertLess(across, 0.1 * along, f"the tool moved by {moved}, not along the view's right axis")
+
+    def moved_along_the_view(self, d, log, device):
+        """The tool's displacement from --pose-b, in the view's right and up axes."""
+        m = re.search(device + r" device: (\d+) poses pushed, tool at (\S+) (\S+) (\S+),", log)
+        self.assertIsNotNone(m, log)
+        self.assertGreater(int(m.group(1)), 5, log)
+        moved = [float(m.group(2)) - 0.3, float(m.group(3)), float(m.group(4))]
+        headless = subprocess.run([VIEWER, *mouse_args(), "--headless", "--out", d], capture_output=True,
+                                  text=True, timeout=300, env=sanitizers.environment(VIEWER))
+        self.assertEqual(headless.returncode, 0, headless.stdout + headless.stderr)
+        with open(os.path.join(d, "frame-0000.json")) as f:
+            view = json.load(f)["view"]
+        right, up = [view[0], view[4], view[8]], [view[1], view[5], view[9]]
+        return sum(a * b for a, b in zip(moved, right)), sum(a * b for a, b in zip(moved, up)), moved
+
+    def test_a_gamepad_stick_moves_the_tool_through_the_streamed_device(self):
+        self.assertIsNotNone(shutil.which("umockdev-run"), "umockdev-run is missing (Debian: umockdev)")
+        with tempfile.TemporaryDirectory() as d:
+            pad = gamepad.write(d)
+            r = subprocess.run(["xvfb-run", "-a", "-s", f"-screen 0 {SCREEN}", "umockdev-run", *pad, "--",
+                                sys.executable, os.path.abspath(__file__), "--capture-gamepad", VIEWER, ASSETS, d],
+                               capture_output=True, text=True, timeout=300)
+            log = ""
+            if os.path.exists(os.path.join(d, "gamepad.log")):
+                with open(os.path.join(d, "gamepad.log")) as f:
+                    log = f.read()
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr + log)
+            self.assertNotRegex(log, VALIDATION)
+            self.assertIn("proxima-viewer: gamepad X360 Controller", log)  # the name of GLFW's mapping
+            along, across, moved = self.moved_along_the_view(d, log, "gamepad")
+        # The left stick held right for about 1.5 s at half the scene's radius a second.
+        self.assertGreater(along, 0.05, f"the tool moved by {moved}, not to the right")
+        self.assertLess(abs(across), 0.1 * along, f"the tool moved by {moved}, not along the view's right axis")
+
+    def test_no_gamepad_is_a_clear_error(self):
+        with tempfile.TemporaryDirectory() as d:
+            r = subprocess.run(["xvfb-run", "-a", "-s", f"-screen 0 {SCREEN}", sys.executable, os.path.abspath(__file__),
+                                "--capture-no-gamepad", VIEWER, ASSETS, d], capture_output=True, text=True, timeout=300)
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+            with open(os.path.join(d, "no-gamepad.log")) as f:
+                log = f.read()
+        self.assertTrue(log.startswith("exit 1\n"), log)
+        self.assertIn("proxima-viewer: --device gamepad: no gamepad is connected", log)
 
     def test_window_shows_what_the_headless_frame_shows(self):
         with tempfile.TemporaryDirectory() as d:
@@ -197,9 +268,11 @@ class WindowTest(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) == 5 and sys.argv[1] in ("--capture", "--capture-mouse"):
+    captures = {"--capture": capture, "--capture-mouse": capture_mouse, "--capture-gamepad": capture_gamepad,
+                "--capture-no-gamepad": capture_no_gamepad}
+    if len(sys.argv) == 5 and sys.argv[1] in captures:
         VIEWER, ASSETS = sys.argv[2], sys.argv[3]
-        (capture if sys.argv[1] == "--capture" else capture_mouse)(sys.argv[4])
+        captures[sys.argv[1]](sys.argv[4])
     VIEWER = os.path.abspath(sys.argv.pop(1))
     ASSETS = os.path.abspath(sys.argv.pop(1))
     unittest.main()
