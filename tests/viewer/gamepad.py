@@ -4,7 +4,7 @@ evdev ioctls GLFW asks at start, and the events it then reads), written
 from the description below. GLFW 3.3 reads gamepads from evdev, and its
 built-in mappings know this pad by its bus, vendor, product and version.
 
-Only the stick's first position is sent, without a SYN_REPORT: on one,
+Only the sticks' first positions are sent, without a SYN_REPORT: on one,
 GLFW re-reads every axis with EVIOCGABS, whose answers here are fixed."""
 
 import os
@@ -60,8 +60,9 @@ def ioctls():
     return "\n".join(lines) + "\n"
 
 
-def write(directory, left_x=32767):
-    """Writes the three files; the left stick sits at left_x from the first read. Returns umockdev-run's options."""
+def write(directory, left_x=32767, right_x=32767):
+    """Writes the three files; from the first read the left stick sits at left_x and the right one at right_x.
+    Returns umockdev-run's options."""
     paths = {k: os.path.join(directory, "pad." + k) for k in ("umockdev", "ioctl", "events")}
     with open(paths["umockdev"], "w") as f:
         f.write(DESCRIPTION)
@@ -69,4 +70,5 @@ def write(directory, left_x=32767):
         f.write(ioctls())
     with open(paths["events"], "w") as f:
         f.write(f"E: 0.000000 0003 0000 {left_x}\n")  # EV_ABS ABS_X
+        f.write(f"E: 0.000000 0003 0003 {right_x}\n")  # EV_ABS ABS_RX
     return ["-d", paths["umockdev"], "-i", f"{DEVICE}={paths['ioctl']}", "-e", f"{DEVICE}={paths['events']}"]

@@ -18,6 +18,7 @@ Needs xvfb-run, xauth, xwd and xdotool (Debian: xvfb, xauth, x11-apps,
 xdotool).
 """
 import json
+import math
 import os
 import re
 import shutil
@@ -173,16 +174,19 @@ class WindowTest(unittest.TestCase):
 
     def moved_along_the_view(self, d, log, device):
         """The tool's displacement from --pose-b, in the view's right and up axes."""
-        m = re.search(device + r" device: (\d+) poses pushed, tool at (\S+) (\S+) (\S+),", log)
+        m = re.search(device + r" device: (\d+) poses pushed, tool at (\S+) (\S+) (\S+), turned (\S+) (\S+) (\S+) (\S+)",
+                      log)
         self.assertIsNotNone(m, log)
         self.assertGreater(int(m.group(1)), 5, log)
         moved = [float(m.group(2)) - 0.3, float(m.group(3)), float(m.group(4))]
+        self.turned = [float(m.group(k)) for k in range(5, 9)]  # w, x, y, z
         headless = subprocess.run([VIEWER, *mouse_args(), "--headless", "--out", d], capture_output=True,
                                   text=True, timeout=300, env=sanitizers.environment(VIEWER))
         self.assertEqual(headless.returncode, 0, headless.stdout + headless.stderr)
         with open(os.path.join(d, "frame-0000.json")) as f:
             view = json.load(f)["view"]
         right, up = [view[0], view[4], view[8]], [view[1], view[5], view[9]]
+        self.view_up = up
         return sum(a * b for a, b in zip(moved, right)), sum(a * b for a, b in zip(moved, up)), moved
 
     def test_a_gamepad_stick_moves_the_tool_through_the_streamed_device(self):
@@ -203,6 +207,13 @@ class WindowTest(unittest.TestCase):
         # The left stick held right for about 1.5 s at half the scene's radius a second.
         self.assertGreater(along, 0.05, f"the tool moved by {moved}, not to the right")
         self.assertLess(abs(across), 0.1 * along, f"the tool moved by {moved}, not along the view's right axis")
+        # The right stick held right: turned by about 1.5 rad about the view's up axis.
+        w, axis = self.turned[0], self.turned[1:]
+        angle = 2 * math.acos(max(-1.0, min(1.0, abs(w))))
+        self.assertGreater(angle, 0.5, f"the tool turned by {self.turned}")
+        norm = math.sqrt(sum(a * a for a in axis))
+        self.assertGreater(abs(sum(a * u for a, u in zip(axis, self.view_up))) / norm, 0.99,
+                           f"the tool turned about {axis}, not the view's up axis {self.view_up}")
 
     def test_no_gamepad_is_a_clear_error(self):
         with tempfile.TemporaryDirectory() as d:
