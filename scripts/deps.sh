@@ -24,6 +24,10 @@ CORE_PACKAGES=(g++ cmake ninja-build libglm-dev libgtest-dev
 VIEWER_PACKAGES=(libvulkan-dev mesa-vulkan-drivers glslang-tools libglfw3-dev libpng-dev
   vulkan-validationlayers libimgui-dev libstb-dev xvfb xauth x11-apps xdotool umockdev)
 
+# The C# bindings (bindings/csharp, docs/csharp.md): Mono's C# compiler and
+# runtime, and NUnit 2.6 for their suite.
+CSHARP_PACKAGES=(mono-mcs mono-devel mono-runtime nunit-console libnunit-cil-dev)
+
 # The scene benchmark's peers and plots (scripts/bench.sh): FCL to measure
 # against (never a dependency of the SDK) and a venv for matplotlib.
 BENCH_PACKAGES=(libbenchmark-dev libfcl-dev python3 python3-venv)

@@ -10,6 +10,8 @@ cd "$(dirname "$0")/.."
 need_packages "${CORE_PACKAGES[@]}" libbenchmark-dev python3 python3-venv
 # The viewer's tests (label "viewer") run in the ASan and release suites, on lavapipe.
 need_packages "${VIEWER_PACKAGES[@]}"
+# The C# bindings: the release ctest runs their NUnit suite (label csharp).
+need_packages "${CSHARP_PACKAGES[@]}"
 
 jobs=$(nproc)
 configure() {  # configure DIR [cmake args...]
@@ -51,3 +53,17 @@ fi
 build/release/bench/proxima_bench --scene all --poses 5 --meshes build/bench-meshes --out build/bench-smoke >/dev/null
 build/release/bench/proxima_timing_bench --seconds 0.1 --out build/bench-smoke >/dev/null
 ctest --test-dir build/release --output-on-failure -j "$jobs"
+
+echo "== Python bindings (bindings/python): pip install into a fresh venv, then pytest"
+# Pinned PyPI versions: bindings/python/ci-constraints.txt. The contacts are
+# compared with the release build's proxima tool (PROXIMA_CLI).
+rm -rf build/py-venv
+python3 -m venv build/py-venv
+PIP_CONSTRAINT="$(pwd)/bindings/python/ci-constraints.txt" CMAKE_BUILD_PARALLEL_LEVEL="$jobs" \
+  build/py-venv/bin/pip install --quiet ./bindings/python -r bindings/python/tests/requirements.txt \
+  --config-settings=build-dir="$(pwd)/build/py-wheel"
+echo "-- Python benchmarks smoke run (docs/python.md)"
+build/py-venv/bin/python bindings/python/bench/step_overhead.py "$(assets_dir)/bunny.obj" --iterations 20 >/dev/null
+build/py-venv/bin/python bindings/python/bench/gil.py "$(assets_dir)/bunny.obj" --seconds 0.2 >/dev/null
+PROXIMA_CLI="$(pwd)/build/release/samples/cli/proxima" PROXIMA_ASSETS="$(assets_dir)" \
+  build/py-venv/bin/pytest -q bindings/python/tests

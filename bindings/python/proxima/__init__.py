@@ -1,0 +1,33 @@
+"""Proxima: multi-contact proximity haptics, from Python.
+
+    import proxima
+    with proxima.World(method="precise", cutoff=0.005, force="hard") as w:
+        bunny = w.load_mesh("bunny.obj")
+        w.create_body(bunny, "static")
+        tool = w.create_body(bunny, "tool", pose=((0.14, 0, 0), (1, 0, 0, 0)))
+        w.step()
+        print(tool.contacts()["distance"].min(), tool.wrench())
+
+A thin layer over the C API (proxima.h, loaded with cffi); docs/python.md.
+"""
+
+from ._core import (Busy, CapacityError, Error, FileError, InternalError, InvalidArgument, InvalidHandle,
+                    InvalidMesh, ParseError, Unsupported, VersionMismatch, WrongThread, c_dtype,
+                    version_string)
+from ._devices import ScriptedDevice, StreamDevice, get_time
+from ._types import (ForceSettings, IntersectionStats, MeshInfo, MeshStats, SafetyStats, ScriptedDeviceRecord,
+                     SearchStats, StreamDeviceStats, ThreadStats, TrackStats, WorldStats, contact_dtype)
+from ._world import Body, Mesh, World, distance, force_preset
+
+#: "major.minor.patch": the library's proxGetVersion(), checked at import
+#: against the header the package was built from.
+__version__ = version_string()
+
+__all__ = [
+    "__version__", "World", "Mesh", "Body", "ScriptedDevice", "StreamDevice", "get_time", "distance",
+    "force_preset", "c_dtype", "StreamDeviceStats",
+    "contact_dtype", "ForceSettings", "MeshInfo", "MeshStats", "WorldStats", "SearchStats", "TrackStats",
+    "IntersectionStats", "ThreadStats", "SafetyStats", "ScriptedDeviceRecord",
+    "Error", "InvalidArgument", "InvalidHandle", "InvalidMesh", "FileError", "ParseError", "Unsupported",
+    "VersionMismatch", "WrongThread", "CapacityError", "InternalError", "Busy",
+]

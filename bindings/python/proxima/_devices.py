@@ -1,0 +1,82 @@
+"""The built-in devices: the haptic loop calls them in C, never Python."""
+
+import numpy as np
+
+from ._core import check, ffi, from_c, lib, pose_to_c, real
+from ._types import ScriptedDeviceRecord, StreamDeviceStats
+
+
+def get_time():
+    """Seconds on the steady, monotonic clock StreamDevice.push_pose's times are
+    on (proxGetTime). Any thread."""
+    return lib.proxGetTime()
+
+
+class ScriptedDevice:
+    """A tool moved along a path of poses (proxScriptedDeviceId); attach it
+    with Body.set_device. It lives as long as its world."""
+
+    def __init__(self, world, idp):
+        self.world = world
+        self._idp = idp
+
+    @property
+    def record(self):
+        """What the device has been handed so far (ScriptedDeviceRecord)."""
+        out = ffi.new("proxScriptedDeviceRecord*")
+        check(lib.proxScriptedDevice_GetRecord(self._idp[0], out))
+        return from_c(ScriptedDeviceRecord, out[0])
+
+    def _device_def(self):
+        out = ffi.new("proxDeviceDef*")
+        check(lib.proxScriptedDevice_GetDeviceDef(self._idp[0], out))
+        return out
+
+    def __repr__(self):
+        return f"<proxima.ScriptedDevice {self._idp[0].index1 - 1}>"
+
+
+class StreamDevice:
+    """The device for a tool your code moves (proxStreamDeviceId): push
+    timestamped poses from one thread at your own rate, the haptic loop
+    renders the pose at its 1 kHz from the latest samples (in C: no Python
+    runs on the haptic thread). Attach it with Body.set_device; it lives as
+    long as its world."""
+
+    def __init__(self, world, idp):
+        self.world = world
+        self._idp = idp
+
+    def push_pose(self, position, quaternion, t=None):
+        """Hands the device the tool's world pose at time `t` (get_time()'s
+        clock; default now). From any one thread at a time; never waits. A
+        sample no newer than the newest is dropped (counted in stats)."""
+        # A pose of its own per call: a second thread pushing at once must be
+        # refused by the library (PROX_ERROR_WRONG_THREAD), not overwrite this one.
+        pose = ffi.new("proxPose*")
+        pose_to_c((position, quaternion), pose[0], "push_pose")
+        when = get_time() if t is None else real(t, "push_pose: t")
+        check(lib.proxStreamDevice_PushPose(self._idp[0], pose, when))
+
+    def wrench(self):
+        """(force (3,) N, torque (3,) N m, clipped): what the haptic loop last
+        handed the device. Any thread."""
+        w = ffi.new("proxWrench*")
+        check(lib.proxStreamDevice_GetWrench(self._idp[0], w))
+        f, t = w.force, w.torque
+        return np.array([f.x, f.y, f.z]), np.array([t.x, t.y, t.z]), bool(w.clipped)
+
+    @property
+    def stats(self):
+        """What the device saw (StreamDeviceStats)."""
+        out = ffi.new("proxStreamDeviceStats*")
+        check(lib.proxStreamDevice_GetStats(self._idp[0], out))
+        return from_c(StreamDeviceStats, out[0])
+
+    def _device_def(self):
+        out = ffi.new("proxDeviceDef*")
+        check(lib.proxStreamDevice_GetDeviceDef(self._idp[0], out))
+        return out
+
+    def __repr__(self):
+        return f"<proxima.StreamDevice {self._idp[0].index1 - 1}>"

@@ -1,0 +1,47 @@
+"""The package's dataclasses and dtypes, each derived from a struct of proxima.h."""
+
+import numpy as np
+
+from ._core import c_dtype, check, enum_value, ffi, lib, make_dataclass, snake
+
+_hard = ffi.new("proxForceSettings*")
+check(lib.proxGetForcePreset(enum_value("proxForcePreset", "hard", "preset"), _hard, ffi.new("double*")))
+
+ForceSettings = make_dataclass(
+    "proxForceSettings", "ForceSettings",
+    "A world's force settings (proxForceSettings); the defaults are the 'hard' preset's.",
+    defaults=_hard[0])
+MeshInfo = make_dataclass("proxMeshInfo", "MeshInfo", "Counts and bounds of a mesh (proxMeshInfo).")
+MeshStats = make_dataclass("proxMeshStats", "MeshStats", "A mesh's input counts and hierarchy (proxMeshStats).")
+WorldStats = make_dataclass("proxWorldStats", "WorldStats", "The last step's figures (proxWorldStats).")
+SearchStats = make_dataclass("proxSearchStats", "SearchStats",
+                             "The last step's global searches (proxSearchStats).")
+TrackStats = make_dataclass("proxTrackStats", "TrackStats", "The last World.track() (proxTrackStats).")
+IntersectionStats = make_dataclass("proxIntersectionStats", "IntersectionStats",
+                                   "The last Body.intersections() (proxIntersectionStats).")
+ThreadStats = make_dataclass("proxThreadStats", "ThreadStats", "One thread's timing (proxThreadStats).")
+SafetyStats = make_dataclass("proxSafetyStats", "SafetyStats",
+                             "The haptic loop's safety decisions (proxSafetyStats).")
+StreamDeviceStats = make_dataclass("proxStreamDeviceStats", "StreamDeviceStats",
+                                   "What a streamed device saw (proxStreamDeviceStats).")
+ScriptedDeviceRecord = make_dataclass("proxScriptedDeviceRecord", "ScriptedDeviceRecord",
+                                      "What a scripted device was handed (proxScriptedDeviceRecord).")
+
+
+def _public_contact_dtype():
+    """proxContact in snake_case: vectors as (3,) float64, the other body as an
+    object (a Body), last."""
+    raw = c_dtype("proxContact")
+    fields, objects = [], []
+    for name, field in ffi.typeof("proxContact").fields:
+        if field.type.cname == "struct proxVec3":
+            fields.append((snake(name), np.float64, (3,)))
+        elif field.type.cname == "struct proxBodyId":
+            objects.append((snake(name), object))
+        else:
+            fields.append((snake(name), raw.fields[name][0]))
+    return np.dtype(fields + objects)
+
+
+#: The dtype of Body.contacts(): one row per contact.
+contact_dtype = _public_contact_dtype()

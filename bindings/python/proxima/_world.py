@@ -1,0 +1,520 @@
+"""Worlds, meshes and bodies over the C API."""
+
+import atexit
+import math
+import os
+import threading
+import warnings
+import weakref
+
+import numpy as np
+
+from . import _header
+from ._core import (CAPACITY, c_dtype, check, enum_value, ffi, fill_c, from_c, integer, invalid, lib,
+                    pose_from_c, pose_to_c, poses_array, real, snake, vec3)
+from ._types import (ForceSettings, IntersectionStats, MeshInfo, MeshStats, SafetyStats, SearchStats,
+                     ThreadStats, TrackStats, WorldStats, contact_dtype)
+
+_UINT32_MAX = 0xFFFFFFFF
+_live_worlds = weakref.WeakSet()
+
+
+def force_preset(name):
+    """(ForceSettings, cutoff) of a preset: "hard" or "soft" (docs/cli.md)."""
+    force, cutoff = ffi.new("proxForceSettings*"), ffi.new("double*")
+    check(lib.proxGetForcePreset(enum_value("proxForcePreset", name, "force"), force, cutoff))
+    return from_c(ForceSettings, force[0]), cutoff[0]
+
+
+def _key(id_value):
+    return (id_value.index1, id_value.generation)
+
+
+def _path(path, what):
+    if not isinstance(path, (str, bytes, os.PathLike)):
+        raise invalid(f"{what} must be a path, not {path!r}")
+    return os.fsencode(path)
+
+
+class World:
+    """A world of meshes and bodies (proxWorldId). Destroyed by close(), at
+    the end of a ``with`` block, or when it is garbage collected; its meshes
+    and bodies keep it alive."""
+
+    def __init__(self, method="precise", cutoff=None, force="hard"):
+        self._idp = None
+        d = ffi.new("proxWorldDef*", lib.proxDefaultWorldDef())
+        d.method = enum_value("proxMethod", method, "method")
+        if isinstance(force, str):
+            settings, default_cutoff = force_preset(force)
+        elif isinstance(force, ForceSettings):
+            settings, default_cutoff = force, d.cutoff
+        else:
+            raise invalid(f"force must be 'hard', 'soft' or a proxima.ForceSettings, not {force!r}")
+        fill_c(settings, d.force, "force")
+        d.cutoff = default_cutoff if cutoff is None else real(cutoff, "cutoff")
+        idp = ffi.new("proxWorldId*")
+        check(lib.proxCreateWorld(d, idp))
+        self._idp = idp
+        self._thread = threading.get_ident()
+        self._method = method
+        self._cutoff = d.cutoff
+        self._bodies = weakref.WeakValueDictionary()
+        self._body_info = {}
+        self._meshes = weakref.WeakValueDictionary()
+        _live_worlds.add(self)
+
+    # ---- lifetime ----
+
+    def close(self):
+        """Destroys the world and everything in it (stopping its threads
+        first). Its meshes, bodies and devices then raise InvalidHandle."""
+        if self._idp is not None and lib.proxWorld_IsValid(self._idp[0]):
+            check(lib.proxDestroyWorld(self._idp[0]))
+
+    @property
+    def closed(self):
+        return self._idp is None or not lib.proxWorld_IsValid(self._idp[0])
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __del__(self):
+        if getattr(self, "_idp", None) is None or lib is None:
+            return
+        if not lib.proxWorld_IsValid(self._idp[0]):
+            return
+        if threading.get_ident() != self._thread:
+            # Only the creating thread may destroy a world; it is left alive.
+            warnings.warn("a proxima.World was garbage collected on a thread other than the one that "
+                          "created it and could not be destroyed: close it on its own thread",
+                          ResourceWarning, stacklevel=2)
+            return
+        lib.proxDestroyWorld(self._idp[0])
+
+    def __repr__(self):
+        state = "closed" if self.closed else f"method={self._method!r}, cutoff={self._cutoff!r}"
+        return f"<proxima.World {state}>"
+
+    # ---- meshes ----
+
+    def load_mesh(self, path):
+        """A mesh from an OBJ, glTF (.gltf) or binary glTF (.glb) file."""
+        idp = ffi.new("proxMeshId*")
+        check(lib.proxWorld_LoadMesh(self._idp[0], _path(path, "load_mesh: path"), idp))
+        return self._mesh(idp)
+
+    def create_mesh(self, vertices, triangles):
+        """A mesh from an (N, 3) array of vertex positions and an (M, 3)
+        integer array of vertex indices per triangle, counter-clockwise seen
+        from outside. Any real dtype for the vertices, any integer dtype
+        whose values fit uint32 for the triangles; copied."""
+        v = _array(vertices, "create_mesh: vertices", "fiu", "numbers")
+        t = _array(triangles, "create_mesh: triangles", "iu", "integers")
+        if t.size:
+            bad = np.argwhere((t < 0) | (t > _UINT32_MAX))
+            if bad.size:
+                i, j = bad[0]
+                raise invalid(f"create_mesh: triangles[{i}, {j}] = {t[i, j]} is not a valid uint32 vertex index")
+        if len(v) > _UINT32_MAX or len(t) > _UINT32_MAX:
+            raise invalid("create_mesh: more than 2**32 - 1 vertices or triangles")
+        v = np.ascontiguousarray(v, dtype=np.float64)
+        t = np.ascontiguousarray(t, dtype=np.uint32)
+        d = ffi.new("proxMeshDef*", lib.proxDefaultMeshDef())
+        d.positions = ffi.from_buffer("double[]", v) if v.size else ffi.NULL
+        d.vertexCount = len(v)
+        d.indices = ffi.from_buffer("uint32_t[]", t) if t.size else ffi.NULL
+        d.triangleCount = len(t)
+        idp = ffi.new("proxMeshId*")
+        check(lib.proxWorld_CreateMesh(self._idp[0], d, idp))
+        return self._mesh(idp)
+
+    def create_mesh_from_trimesh(self, mesh):
+        """A mesh from a trimesh.Trimesh (its vertices and faces); trimesh
+        is optional and only needed to make the object."""
+        if not (hasattr(mesh, "vertices") and hasattr(mesh, "faces")):
+            raise invalid(f"create_mesh_from_trimesh: expected a trimesh.Trimesh, not {type(mesh).__name__}")
+        return self.create_mesh(mesh.vertices, mesh.faces)
+
+    def _mesh(self, idp):
+        key = _key(idp[0])
+        mesh = self._meshes.get(key)
+        if mesh is None:
+            mesh = Mesh(self, idp)
+            self._meshes[key] = mesh
+        return mesh
+
+    # ---- bodies ----
+
+    def create_body(self, mesh, type="static", pose=None, reference_point=None):
+        """A body: `mesh` at `pose` ((position, quaternion_wxyz); default the
+        identity). `type` is "static", "movable" or "tool"; a tool's torques
+        are taken about `reference_point` (its own frame; default the origin)."""
+        if not isinstance(mesh, Mesh):
+            raise invalid(f"create_body: mesh must be a proxima.Mesh, not {mesh!r}")
+        d = ffi.new("proxBodyDef*", lib.proxDefaultBodyDef())
+        d.mesh = mesh._idp[0]
+        d.type = enum_value("proxBodyType", type, "create_body: type")
+        if pose is not None:
+            pose_to_c(pose, d.pose, "create_body: pose")
+        if reference_point is not None:
+            x, y, z = vec3(reference_point, "create_body: reference_point")
+            d.referencePoint = {"x": x, "y": y, "z": z}
+        idp = ffi.new("proxBodyId*")
+        check(lib.proxWorld_CreateBody(self._idp[0], d, idp))
+        key = _key(idp[0])
+        # The mesh's id, not the Mesh: a Mesh holds its world, and the world
+        # must not hold itself (it is freed as soon as the script drops it).
+        self._body_info[key] = (type, ffi.new("proxMeshId*", mesh._idp[0]))
+        body = Body(self, idp, type, mesh)
+        self._bodies[key] = body
+        return body
+
+    def _body(self, id_value):
+        """The Body of an id this world reported (the same object while it lives)."""
+        key = _key(id_value)
+        body = self._bodies.get(key)
+        if body is None:
+            idp = ffi.new("proxBodyId*", id_value)
+            type_name, mesh_idp = self._body_info.get(key, (None, None))
+            body = Body(self, idp, type_name, self._mesh(mesh_idp) if mesh_idp is not None else None)
+            self._bodies[key] = body
+        return body
+
+    # ---- stepping ----
+
+    def step(self):
+        """The whole method once, on this thread: broadphase, global search
+        and reduction per pair in range (skipped when no pose changed), forces."""
+        check(lib.proxWorld_Step(self._idp[0]))
+
+    def track(self):
+        """Local tracking alone: the last step's contacts carried to the
+        current poses; finds no new contact."""
+        check(lib.proxWorld_Track(self._idp[0]))
+
+    def _stats(self, cls, function, ctype):
+        out = ffi.new(ctype + "*")
+        check(function(self._idp[0], out))
+        return from_c(cls, out[0])
+
+    @property
+    def stats(self):
+        return self._stats(WorldStats, lib.proxWorld_GetStats, "proxWorldStats")
+
+    @property
+    def search_stats(self):
+        return self._stats(SearchStats, lib.proxWorld_GetSearchStats, "proxSearchStats")
+
+    @property
+    def track_stats(self):
+        return self._stats(TrackStats, lib.proxWorld_GetTrackStats, "proxTrackStats")
+
+    @property
+    def safety_stats(self):
+        return self._stats(SafetyStats, lib.proxWorld_GetSafetyStats, "proxSafetyStats")
+
+    # ---- threads and devices ----
+
+    def start_threads(self, **settings):
+        """Starts the haptic, local tracking and global search threads.
+        Settings are proxThreadsDef's fields in snake_case (haptic_rate=1000,
+        local_rate, global_rate, haptic_core, ..., max_contacts, stale_after,
+        haptic_timing="spin", lock_memory=True, ...); the rest keep their
+        defaults."""
+        d = ffi.new("proxThreadsDef*", lib.proxDefaultThreadsDef())
+        _fill_settings(d, "proxThreadsDef", settings, "start_threads")
+        check(lib.proxWorld_StartThreads(self._idp[0], d))
+
+    def stop_threads(self):
+        """Fades every device's force out, then stops the threads."""
+        check(lib.proxWorld_StopThreads(self._idp[0]))
+
+    def thread_stats(self, thread):
+        """ThreadStats of "haptic", "local" or "global"."""
+        out = ffi.new("proxThreadStats*")
+        check(lib.proxWorld_GetThreadStats(self._idp[0], enum_value("proxThread", thread, "thread_stats: thread"),
+                                           out))
+        return from_c(ThreadStats, out[0])
+
+    def create_scripted_device(self, poses, seconds_per_pose, loop=False):
+        """The built-in scripted device: moves a tool through `poses` (a
+        (K, 7) array of tx ty tz qw qx qy qz, or (position, quaternion)
+        pairs), `seconds_per_pose` apart, interpolating. Attach it with
+        Body.set_device; it lives as long as the world."""
+        from ._devices import ScriptedDevice
+        array = poses_array(poses, "create_scripted_device: poses")
+        c_poses = ffi.new("proxPose[]", max(len(array), 1))
+        for i, row in enumerate(array):
+            pose_to_c((row[:3], row[3:]), c_poses[i], f"create_scripted_device: poses[{i}]")
+        d = ffi.new("proxScriptedDeviceDef*", lib.proxDefaultScriptedDeviceDef())
+        d.poses = c_poses
+        d.poseCount = len(array)
+        d.loop = bool(loop)
+        d.secondsPerPose = real(seconds_per_pose, "create_scripted_device: seconds_per_pose")
+        idp = ffi.new("proxScriptedDeviceId*")
+        check(lib.proxWorld_CreateScriptedDevice(self._idp[0], d, idp))
+        return ScriptedDevice(self, idp)
+
+    def create_stream_device(self, mode="interpolate", **settings):
+        """A streamed device: your thread pushes timestamped poses
+        (StreamDevice.push_pose), the haptic loop renders them at its rate.
+        `mode` is "hold", "interpolate" or "extrapolate"; the settings are
+        proxStreamDeviceDef's other fields in snake_case (delay,
+        max_extrapolation, stale_after; seconds)."""
+        from ._devices import StreamDevice
+        d = ffi.new("proxStreamDeviceDef*", lib.proxDefaultStreamDeviceDef())
+        d.mode = enum_value("proxStreamMode", mode, "create_stream_device: mode")
+        _fill_settings(d, "proxStreamDeviceDef", settings, "create_stream_device", skip=("mode",))
+        idp = ffi.new("proxStreamDeviceId*")
+        check(lib.proxWorld_CreateStreamDevice(self._idp[0], d, idp))
+        return StreamDevice(self, idp)
+
+    def load_scripted_device(self, path, seconds_per_pose, loop=False):
+        """A scripted device whose path is read from a file: one pose per
+        line, "tx ty tz qw qx qy qz", '#' comments."""
+        from ._devices import ScriptedDevice
+        idp = ffi.new("proxScriptedDeviceId*")
+        check(lib.proxWorld_LoadScriptedDevice(self._idp[0], _path(path, "load_scripted_device: path"),
+                                               real(seconds_per_pose, "load_scripted_device: seconds_per_pose"),
+                                               bool(loop), idp))
+        return ScriptedDevice(self, idp)
+
+
+def _fill_settings(d, struct_name, settings, what, skip=()):
+    """Sets a def's fields from keyword arguments named in snake_case: numbers,
+    enums by their short names ("spin"), proxBool fields from bools."""
+    bools = _header.BOOL_FIELDS.get(struct_name, ())
+    fields = {snake(name): (name, field.type) for name, field in ffi.typeof(struct_name).fields
+              if name not in ("internalValue", "reserved") and snake(name) not in skip}
+    for key, value in settings.items():
+        if key not in fields:
+            raise invalid(f"{what}: unknown setting {key!r}; the settings are {', '.join(fields)}")
+        name, ctype = fields[key]
+        where = f"{what}: {key}"
+        if ctype.kind == "enum":
+            setattr(d, name, enum_value(ctype.cname, value, where))
+        elif name in bools:
+            if not isinstance(value, (bool, np.bool_)):
+                raise invalid(f"{where} must be True or False, not {value!r}")
+            setattr(d, name, bool(value))
+        elif ctype.cname in ("double", "float"):
+            setattr(d, name, real(value, where))
+        else:
+            setattr(d, name, integer(value, where))
+
+
+def _array(value, what, kinds, noun):
+    try:
+        array = np.asarray(value)
+    except (ValueError, TypeError) as e:
+        raise invalid(f"{what} must be an (N, 3) array of {noun}: {e}") from None
+    if array.dtype.kind not in kinds:
+        raise invalid(f"{what} must be an (N, 3) array of {noun}, got dtype {array.dtype}")
+    if array.ndim != 2 or array.shape[1] != 3:
+        raise invalid(f"{what} must be an (N, 3) array of {noun}, got shape {array.shape}")
+    return array
+
+
+class Mesh:
+    """A mesh of a world (proxMeshId): shared by every body that uses it."""
+
+    def __init__(self, world, idp):
+        self.world = world
+        self._idp = idp
+
+    @property
+    def info(self):
+        out = ffi.new("proxMeshInfo*")
+        check(lib.proxMesh_GetInfo(self._idp[0], out))
+        return from_c(MeshInfo, out[0])
+
+    @property
+    def stats(self):
+        out = ffi.new("proxMeshStats*")
+        check(lib.proxMesh_GetStats(self._idp[0], out))
+        return from_c(MeshStats, out[0])
+
+    def destroy(self):
+        """Destroys the mesh; refused while bodies use it."""
+        check(lib.proxMesh_Destroy(self._idp[0]))
+
+    def __eq__(self, other):
+        return isinstance(other, Mesh) and other.world is self.world and _key(other._idp[0]) == _key(self._idp[0])
+
+    def __hash__(self):
+        return hash((id(self.world), _key(self._idp[0])))
+
+    def __repr__(self):
+        return f"<proxima.Mesh {self._idp[0].index1 - 1}>"
+
+
+def _flat_dtype(name):
+    """The C struct's dtype with each proxVec3 as a (3,) float64 field at the
+    same offset (proxVec3 is three contiguous doubles), and each proxBodyId's
+    index and generation as one uint64 key."""
+    raw = c_dtype(name)
+    vec, body = c_dtype("proxVec3"), c_dtype("proxBodyId")
+    assert vec.itemsize == 24 and [vec.fields[c][1] for c in "xyz"] == [0, 8, 16]
+    assert [body.fields[c][1] for c in ("index1", "generation")] == [0, 4]
+    formats = []
+    for n in raw.names:
+        field = raw.fields[n][0]
+        formats.append((np.float64, (3,)) if field == vec else np.uint64 if field == body else field)
+    return np.dtype({"names": list(raw.names), "formats": formats,
+                     "offsets": [raw.fields[n][1] for n in raw.names], "itemsize": raw.itemsize})
+
+
+_CONTACT_FLAT = _flat_dtype("proxContact")
+_CONTACT_FIELDS = [(snake(n), n) for n in _CONTACT_FLAT.names if n != "other"]
+_LINE_DTYPE = c_dtype("proxPolylineInfo")
+
+
+class Body:
+    """A body of a world (proxBodyId): a mesh at a pose."""
+
+    def __init__(self, world, idp, type, mesh):
+        self.world = world
+        self._idp = idp
+        self.type = type
+        self.mesh = mesh
+        self._contacts = None
+        self._count = ffi.new("int32_t*")
+        # The bodies its contacts named (they keep their world alive, not this body).
+        self._others = {}
+
+    @property
+    def pose(self):
+        """(position (3,), quaternion_wxyz (4,)) as numpy arrays."""
+        out = ffi.new("proxPose*")
+        check(lib.proxBody_GetPose(self._idp[0], out))
+        return pose_from_c(out[0])
+
+    @pose.setter
+    def pose(self, pose):
+        out = ffi.new("proxPose*")
+        pose_to_c(pose, out[0], "pose")
+        check(lib.proxBody_SetPose(self._idp[0], out))
+
+    def contacts(self):
+        """The tool's contacts after the last step (while the threads run,
+        local tracking's latest): a structured array of contact_dtype."""
+        if self._contacts is None:
+            self._contacts = ffi.new("proxContact[]", 64)
+        while True:
+            result = lib.proxBody_GetContacts(self._idp[0], self._contacts, len(self._contacts), self._count)
+            if result != CAPACITY:
+                check(result)
+                break
+            self._contacts = ffi.new("proxContact[]", self._count[0])
+        n = self._count[0]
+        out = np.empty(n, dtype=contact_dtype)
+        if n == 0:
+            return out
+        flat = np.frombuffer(ffi.buffer(self._contacts, n * _CONTACT_FLAT.itemsize), dtype=_CONTACT_FLAT)
+        for public, c in _CONTACT_FIELDS:
+            out[public] = flat[c]
+        keys = flat["other"]
+        if (keys == keys[0]).all():
+            out["other"] = self._other(int(keys[0]), 0)
+        else:
+            out["other"] = [self._other(k, i) for i, k in enumerate(keys.tolist())]
+        return out
+
+    def _other(self, key, i):
+        body = self._others.get(key)
+        if body is None:
+            body = self._others[key] = self.world._body(self._contacts[i].other)
+        return body
+
+    def wrench(self):
+        """(force (3,) N, torque (3,) N m about the reference point, clipped)."""
+        w = ffi.new("proxWrench*")
+        check(lib.proxBody_GetWrench(self._idp[0], w))
+        f, t = w.force, w.torque
+        return np.array([f.x, f.y, f.z]), np.array([t.x, t.y, t.z]), bool(w.clipped)
+
+    def intersections(self):
+        """Where the tool's surface crosses other bodies at their current
+        poses: a list of (points (K, 3), closed, other Body)."""
+        point_count, line_count = ffi.new("int32_t*"), ffi.new("int32_t*")
+        points, lines = ffi.new("proxVec3[]", 1024), ffi.new("proxPolylineInfo[]", 64)
+        while True:
+            result = lib.proxBody_GetIntersections(self._idp[0], points, len(points), point_count,
+                                                   lines, len(lines), line_count)
+            if result != CAPACITY:
+                check(result)
+                break
+            points = ffi.new("proxVec3[]", max(point_count[0], 1))
+            lines = ffi.new("proxPolylineInfo[]", max(line_count[0], 1))
+        xyz = np.frombuffer(ffi.buffer(points, point_count[0] * 24), dtype=np.float64).reshape(-1, 3)
+        out = []
+        for i in range(line_count[0]):
+            line = lines[i]
+            out.append((xyz[line.firstPoint:line.firstPoint + line.pointCount].copy(), bool(line.closed),
+                        self.world._body(line.other)))
+        return out
+
+    @property
+    def intersection_stats(self):
+        out = ffi.new("proxIntersectionStats*")
+        check(lib.proxBody_GetIntersectionStats(self._idp[0], out))
+        return from_c(IntersectionStats, out[0])
+
+    def set_device(self, device):
+        """Lets a device hold this tool while the threads run (None: none).
+        Devices are built in (World.create_stream_device,
+        World.create_scripted_device): a Python callback cannot keep a 1 kHz
+        haptic loop's time (docs/python.md)."""
+        if device is None:
+            check(lib.proxBody_SetDevice(self._idp[0], ffi.NULL))
+            return
+        device_def = getattr(device, "_device_def", None)
+        if device_def is None:
+            raise invalid(f"set_device: expected a device of proxima (World.create_stream_device, "
+                          f"World.create_scripted_device) or None, not {device!r}; Python callbacks cannot "
+                          "drive the haptic loop: push poses to a stream device (docs/python.md)")
+        if getattr(device, "world", None) is not self.world:
+            # The C API cannot tell, and the device would die with its own world.
+            raise invalid(f"set_device: {device!r} belongs to another world than this body")
+        check(lib.proxBody_SetDevice(self._idp[0], device_def()))
+
+    def destroy(self):
+        check(lib.proxBody_Destroy(self._idp[0]))
+        self.world._body_info.pop(_key(self._idp[0]), None)
+
+    def __eq__(self, other):
+        return isinstance(other, Body) and other.world is self.world and _key(other._idp[0]) == _key(self._idp[0])
+
+    def __hash__(self):
+        return hash((id(self.world), _key(self._idp[0])))
+
+    def __repr__(self):
+        return f"<proxima.Body {self._idp[0].index1 - 1} {self.type}>"
+
+
+def distance(a, b, max_distance=math.inf):
+    """The exact minimum distance between two bodies of one world at their
+    current poses: 0 when they touch or cross, inf when farther apart than
+    max_distance."""
+    if not isinstance(a, Body) or not isinstance(b, Body):
+        raise invalid(f"distance: expected two proxima.Body, not {type(a).__name__} and {type(b).__name__}")
+    out = ffi.new("double*")
+    check(lib.proxBody_GetDistance(a._idp[0], b._idp[0], real(max_distance, "distance: max_distance"), out))
+    return math.inf if out[0] < 0 else out[0]
+
+
+@atexit.register
+def _close_worlds():
+    # Before the interpreter's teardown: running threads are stopped and
+    # joined while the library is still whole.
+    me = threading.get_ident()
+    for world in list(_live_worlds):
+        if world._thread == me:
+            world.close()
+
+
+__all__ = ["World", "Mesh", "Body", "distance", "force_preset"]

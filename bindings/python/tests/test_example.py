@@ -1,0 +1,44 @@
+"""The path T example: the same steps as `proxima path`, and its plot."""
+
+import csv
+import os
+import pathlib
+import subprocess
+import sys
+
+import numpy as np
+
+from conftest import BUNNY
+from test_cli import cli  # noqa: F401 (the fixture)
+
+EXAMPLES = pathlib.Path(__file__).resolve().parents[1] / "examples"
+sys.path.insert(0, str(EXAMPLES))
+import path_t  # noqa: E402
+
+
+def test_path_t_equals_the_cli(cli, tmp_path):  # noqa: F811
+    steps = 40
+    out = tmp_path / "path.csv"
+    subprocess.run([cli, "path", "--steps", str(steps), "--csv", str(out)], check=True, capture_output=True,
+                   env={**os.environ, "PROXIMA_ASSETS": str(BUNNY.parent)})
+    with open(out) as f:
+        expected = list(csv.DictReader(f))
+    results = path_t.run_path(BUNNY, steps)
+    rows = [(m, r) for m in ("precise", "original") for r in results[m]]
+    assert len(rows) == len(expected) == 2 * steps
+    assert sum(r["lmds"] > 0 for _, r in rows) > 0
+    for (method, row), e in zip(rows, expected):
+        assert e["method"] == method
+        assert "%.9g" % row["x"] == e["x"]
+        assert "%.9g" % row["min_distance"] == e["min_distance"]
+        assert (row["candidates"], row["lmds"]) == (int(e["candidates"]), int(e["lmds"]))
+        assert ["%.9g" % v for v in row["force"]] == [e["force_x"], e["force_y"], e["force_z"]]
+
+
+def test_path_t_writes_its_plot(tmp_path):
+    png = tmp_path / "path_t.png"
+    assert path_t.main([str(BUNNY), "--steps", "30", "--out", str(png)]) == 0
+    data = png.read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 10000
+    width, height = np.frombuffer(data[16:24], dtype=">u4")
+    assert (width, height) == (800, 1000)

@@ -1,0 +1,79 @@
+/* Prints the size of every public struct of proxima.h, and the offsets of the
+ * fields that follow padding, as a C compiler lays them out: what the C#
+ * binding's StructLayoutTests compare Marshal.SizeOf and OffsetOf against.
+ * One "name value" per line. */
+#include <proxima/proxima.h>
+
+#include <stddef.h>
+#include <stdio.h>
+
+#define SIZE(T) printf(#T " %zu\n", sizeof(T))
+#define OFFSET(T, f) printf(#T "." #f " %zu\n", offsetof(T, f))
+
+int main(void) {
+  SIZE(proxBool);
+  SIZE(proxResult);
+  SIZE(proxVersion);
+  SIZE(proxWorldId);
+  SIZE(proxMeshId);
+  SIZE(proxBodyId);
+  SIZE(proxVec3);
+  SIZE(proxQuat);
+  SIZE(proxPose);
+  SIZE(proxForceSettings);
+  SIZE(proxWorldDef);
+  SIZE(proxMeshDef);
+  SIZE(proxMeshInfo);
+  SIZE(proxBodyDef);
+  SIZE(proxContact);
+  SIZE(proxWrench);
+  SIZE(proxPolylineInfo);
+  SIZE(proxWorldStats);
+  SIZE(proxDeviceDef);
+  SIZE(proxScriptedDeviceId);
+  SIZE(proxScriptedDeviceDef);
+  SIZE(proxScriptedDeviceRecord);
+  SIZE(proxStreamMode);
+  SIZE(proxStreamDeviceId);
+  SIZE(proxStreamDeviceDef);
+  SIZE(proxStreamDeviceStats);
+  SIZE(proxHapticTiming);
+  SIZE(proxThreadsDef);
+  SIZE(proxThreadStats);
+  SIZE(proxSafetyStats);
+  SIZE(proxMeshStats);
+  SIZE(proxSearchStats);
+  SIZE(proxTrackStats);
+  SIZE(proxIntersectionStats);
+  OFFSET(proxForceSettings, maxForce);
+  OFFSET(proxWorldDef, cutoff);
+  OFFSET(proxWorldDef, internalValue);
+  OFFSET(proxMeshDef, indices);
+  OFFSET(proxMeshDef, triangleCount);
+  OFFSET(proxMeshInfo, boundsMin);
+  OFFSET(proxBodyDef, pose);
+  OFFSET(proxBodyDef, referencePoint);
+  OFFSET(proxContact, pointTool);
+  OFFSET(proxContact, distance);
+  OFFSET(proxContact, featureOther);
+  OFFSET(proxWrench, clipped);
+  OFFSET(proxPolylineInfo, closed);
+  OFFSET(proxDeviceDef, userData);
+  OFFSET(proxScriptedDeviceDef, secondsPerPose);
+  OFFSET(proxScriptedDeviceRecord, allFinite);
+  OFFSET(proxStreamDeviceDef, delay);
+  OFFSET(proxStreamDeviceDef, internalValue);
+  OFFSET(proxStreamDeviceStats, meanSampleInterval);
+  OFFSET(proxThreadsDef, staleAfter);
+  OFFSET(proxThreadsDef, hapticTiming);
+  OFFSET(proxThreadsDef, spinMargin);
+  OFFSET(proxThreadsDef, lockMemory);
+  OFFSET(proxThreadsDef, internalValue);
+  OFFSET(proxThreadStats, targetRate);
+  OFFSET(proxThreadStats, periodP999);
+  OFFSET(proxThreadStats, timing);
+  OFFSET(proxMeshStats, hierarchyBytes);
+  OFFSET(proxSearchStats, nodePairs);
+  OFFSET(proxTrackStats, distanceEvaluations);
+  return 0;
+}
