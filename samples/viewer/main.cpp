@@ -317,8 +317,10 @@ int Viewer::run_window() {
         input.tool_drag = glm::dvec3(0.0);
       }
       if (options_.device_kind == DeviceKind::gamepad) {
+        // The stick's motion over the time since the last frame, up to a quarter second: a stalled
+        // frame does not fling the tool.
         const Clock::time_point now = Clock::now();
-        const double seconds = std::min(0.1, std::chrono::duration<double>(now - last_input_).count());
+        const double seconds = std::min(0.25, std::chrono::duration<double>(now - last_input_).count());
         last_input_ = now;
         if (!apply_gamepad(gamepad, camera_, seconds, &tool_target_))
           gamepad = find_gamepad();  // unplugged: hold

@@ -156,7 +156,7 @@ class WindowTest(unittest.TestCase):
             self.assertNotRegex(log, VALIDATION)
             m = re.search(r"mouse device: (\d+) poses pushed, tool at (\S+) (\S+) (\S+),", log)
             self.assertIsNotNone(m, log)
-            self.assertGreater(int(m.group(1)), 5, log)
+            self.assertGreater(int(m.group(1)), 2, log)
             self.assertIn("method original, force hard", log)
             moved = [float(m.group(2)) - 0.3, float(m.group(3)), float(m.group(4))]
             # The camera of the same scene, from a headless frame's sidecar.
@@ -177,7 +177,7 @@ class WindowTest(unittest.TestCase):
         m = re.search(device + r" device: (\d+) poses pushed, tool at (\S+) (\S+) (\S+), turned (\S+) (\S+) (\S+) (\S+)",
                       log)
         self.assertIsNotNone(m, log)
-        self.assertGreater(int(m.group(1)), 5, log)
+        self.assertGreater(int(m.group(1)), 2, log)  # a frame or more a push, however slow the frames
         moved = [float(m.group(2)) - 0.3, float(m.group(3)), float(m.group(4))]
         self.turned = [float(m.group(k)) for k in range(5, 9)]  # w, x, y, z
         headless = subprocess.run([VIEWER, *mouse_args(), "--headless", "--out", d], capture_output=True,
@@ -204,13 +204,14 @@ class WindowTest(unittest.TestCase):
             self.assertNotRegex(log, VALIDATION)
             self.assertIn("proxima-viewer: gamepad X360 Controller", log)  # the name of GLFW's mapping
             along, across, moved = self.moved_along_the_view(d, log, "gamepad")
-        # The left stick held right for about 1.5 s at half the scene's radius a second.
-        self.assertGreater(along, 0.05, f"the tool moved by {moved}, not to the right")
+        # The left stick held right for about 1.5 s at half the scene's radius (0.2 m) a second: about
+        # 0.15 m, less when frames are slower than the 0.25 s a frame may integrate.
+        self.assertGreater(along, 0.02, f"the tool moved by {moved}, not to the right")
         self.assertLess(abs(across), 0.1 * along, f"the tool moved by {moved}, not along the view's right axis")
         # The right stick held right: turned by about 1.5 rad about the view's up axis.
         w, axis = self.turned[0], self.turned[1:]
         angle = 2 * math.acos(max(-1.0, min(1.0, abs(w))))
-        self.assertGreater(angle, 0.5, f"the tool turned by {self.turned}")
+        self.assertGreater(angle, 0.2, f"the tool turned by {self.turned}")
         norm = math.sqrt(sum(a * a for a in axis))
         self.assertGreater(abs(sum(a * u for a, u in zip(axis, self.view_up))) / norm, 0.99,
                            f"the tool turned about {axis}, not the view's up axis {self.view_up}")
