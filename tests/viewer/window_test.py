@@ -156,7 +156,8 @@ class WindowTest(unittest.TestCase):
             self.assertNotRegex(log, VALIDATION)
             m = re.search(r"mouse device: (\d+) poses pushed, tool at (\S+) (\S+) (\S+),", log)
             self.assertIsNotNone(m, log)
-            self.assertGreater(int(m.group(1)), 2, log)
+            # Counted by the streamed device of the world the M key rebuilt, which took the dragged pose.
+            self.assertGreater(int(m.group(1)), 0, log)
             self.assertIn("method original, force hard", log)
             moved = [float(m.group(2)) - 0.3, float(m.group(3)), float(m.group(4))]
             # The camera of the same scene, from a headless frame's sidecar.
