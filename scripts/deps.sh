@@ -17,6 +17,13 @@ need_packages() {
 CORE_PACKAGES=(g++ cmake ninja-build libglm-dev libgtest-dev
   libtinygltf-dev nlohmann-json3-dev)  # glTF loading (PROX_WITH_GLTF)
 
+# The Vulkan viewer (samples/viewer, docs/viewer.md) and its tests: the
+# loader and headers, lavapipe (the CPU driver), the shader compiler, GLFW,
+# libpng, the validation layers, ImGui for the HUD's text, and Xvfb with
+# xwd, xdotool and umockdev (an emulated gamepad) for the windowed test.
+VIEWER_PACKAGES=(libvulkan-dev mesa-vulkan-drivers glslang-tools libglfw3-dev libpng-dev
+  vulkan-validationlayers libimgui-dev libstb-dev xvfb xauth x11-apps xdotool umockdev)
+
 # The C# bindings (bindings/csharp, docs/csharp.md): Mono's C# compiler and
 # runtime, and NUnit 2.6 for their suite.
 CSHARP_PACKAGES=(mono-mcs mono-devel mono-runtime nunit-console libnunit-cil-dev)

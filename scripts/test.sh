@@ -8,6 +8,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/deps.sh
 need_packages "${CORE_PACKAGES[@]}" libbenchmark-dev python3 python3-venv
+# The viewer's tests (label "viewer") run in the ASan and release suites, on lavapipe.
+need_packages "${VIEWER_PACKAGES[@]}"
 # The C# bindings: the release ctest runs their NUnit suite (label csharp).
 need_packages "${CSHARP_PACKAGES[@]}"
 

@@ -1,0 +1,85 @@
+// The scene from the C API: one world with mesh A as a static body and mesh
+// B as the held tool, the device that drives it, and what the viewer reads
+// from it once per frame (poses, contacts, wrench, polylines, thread stats).
+#pragma once
+
+#include "options.h"
+
+#include <proxima/proxima.h>
+
+#include <glm/glm.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace viewer {
+
+// A failed C API call: the library's message.
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Polyline {
+  std::vector<glm::dvec3> points;  // world
+  bool closed = false;
+};
+
+// What one frame shows, read from the world in update().
+struct FrameData {
+  glm::dmat4 model_a{1.0}, model_tool{1.0};  // body to world
+  glm::dvec3 reference_point{0.0};           // the tool's, world: where the force is drawn
+  std::vector<proxContact> contacts;
+  std::vector<Polyline> polylines;
+  bool polylines_valid = false;  // computed at polylines_pose: kept while the tool stays there
+  proxPose polylines_pose{};
+  proxWrench wrench{};
+  bool threads = false;               // the world's threads run (else it was stepped)
+  proxThreadStats thread_stats[3]{};  // haptic, local, global
+};
+
+class Scene {
+ public:
+  // Builds the world and starts its threads when a device drives the tool.
+  // Throws SceneError with the library's message (a missing mesh, a bad
+  // poses file).
+  Scene(const Options& options, const std::string& path_a, const std::string& path_b);
+  ~Scene();
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  // Reads this frame's data into `frame` (the previous frame's, reused);
+  // polylines only when asked, as they are computed on the call, and only
+  // when the tool has moved since they were.
+  void update(FrameData& frame, bool polylines) const;
+  // The mouse and gamepad devices: hands the streamed device holding the
+  // tool where the input has taken it, now (once a frame).
+  void push_tool_pose(const proxPose& pose);
+  // What the streamed device saw; false when no streamed device drives the tool.
+  bool stream_stats(proxStreamDeviceStats* stats) const;
+  proxPose tool_pose() const;
+
+  // The box the camera frames: both bodies over the tool's whole path.
+  glm::dvec3 bounds_min() const { return bounds_min_; }
+  glm::dvec3 bounds_max() const { return bounds_max_; }
+  double cutoff() const { return cutoff_; }
+  const proxForceSettings& force() const { return force_; }
+  // Each contact's share of the summed force magnitude, by the force curve.
+  std::vector<double> force_shares(const std::vector<proxContact>& contacts) const;
+
+ private:
+  void build(const Options& options, const std::string& path_a, const std::string& path_b);
+  double x_at_gap(double gap) const;
+
+  proxWorldId world_{};
+  proxBodyId a_{}, tool_{};
+  proxMeshId mesh_a_{}, mesh_b_{};
+  bool threads_ = false;
+  proxStreamDeviceId stream_{};  // the mouse or gamepad device
+  double cutoff_ = 0.0;
+  proxForceSettings force_{};
+  glm::dvec3 reference_local_{0.0};
+  glm::dvec3 bounds_min_{0.0}, bounds_max_{0.0};
+};
+
+}  // namespace viewer

@@ -1,0 +1,390 @@
+"""Headless tests of proxima-viewer on the CPU Vulkan driver (lavapipe),
+with the validation layers on in every run; run by ctest:
+
+    python3 viewer_test.py PATH_TO_PROXIMA_VIEWER PATH_TO_SHARED_ASSETS
+
+The pictures are checked against the frames' own sidecars: a string, a
+polyline or a mesh vertex is projected with the view and projection matrices
+the frame wrote, and the pixels that changed between two renders of the same
+scene (with and without one kind of thing) must be exactly those.
+"""
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import unittest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import png  # noqa: E402
+import sanitizers  # noqa: E402
+
+VIEWER = None
+VALIDATION = r"validation (error|warning|message)"  # what the viewer prints for one
+ASSETS = None
+SIZE = (480, 270)
+# Scenes of the bunny against itself (A at the identity, B the tool):
+NEAR = ("0", "0", "0.097", "1", "0", "0", "0")  # 0.45 mm apart: 8 LMDs within a 10 mm cutoff, no crossing
+CROSSING = ("0.1", "0", "0", "1", "0", "0", "0")  # the surfaces cross: polylines
+FAR = ("0.5", "0", "0", "1", "0", "0", "0")  # 0.3 m apart: nothing within the cutoff
+SIDE = ("-0.14", "0", "0", "1", "0", "0", "0")  # 1 mm apart along x: 2 LMDs, a few of their pixels in view
+STRING_RADIUS = (2.0 + 6.0) / 2  # the widest string: 8 px (docs/viewer.md)
+POLYLINE_RADIUS = 3.0 / 2
+MAGENTA = (255, 0, 255)
+
+
+def run(*args, env=None, timeout=300):
+    return subprocess.run([VIEWER, *args], capture_output=True, text=True, timeout=timeout,
+                          env=sanitizers.environment(VIEWER, env))
+
+
+def render(directory, name, pose, show, *extra):
+    out = os.path.join(directory, name)
+    bunny = os.path.join(ASSETS, "bunny.obj")
+    r = run(bunny, bunny, "--pose-b", *pose, "--headless", "--validation", "--size", f"{SIZE[0]}x{SIZE[1]}",
+            "--show", show, "--out", out, *extra)
+    if r.returncode != 0 or re.search(VALIDATION, r.stderr):
+        raise AssertionError(f"proxima-viewer failed ({r.returncode}) for {name}:\n{r.stdout}{r.stderr}")
+    with open(os.path.join(out, "frame-0000.json")) as f:
+        sidecar = json.load(f)
+    return png.read(os.path.join(out, "frame-0000.png")), sidecar
+
+
+def project(sidecar, p):
+    """World point -> pixel coordinates (x right, y down) with the frame's matrices."""
+    v, pr = sidecar["view"], sidecar["proj"]
+
+    def mul(m, x):  # column-major 4x4 times a 4-vector
+        return [sum(m[c * 4 + r] * x[c] for c in range(4)) for r in range(4)]
+
+    clip = mul(pr, mul(v, [p[0], p[1], p[2], 1.0]))
+    w, h = sidecar["viewport"]
+    return ((clip[0] / clip[3] * 0.5 + 0.5) * w, (clip[1] / clip[3] * 0.5 + 0.5) * h, clip[2] / clip[3])
+
+
+def changed(a, b):
+    """Pixels (x, y) whose colour differs between two images."""
+    out = set()
+    for y in range(a.height):
+        for x in range(a.width):
+            i = 3 * (y * a.width + x)
+            if a.rgb[i:i + 3] != b.rgb[i:i + 3]:
+                out.add((x, y))
+    return out
+
+
+def distance_to_segment(px, py, a, b):
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    length2 = dx * dx + dy * dy
+    t = 0.0 if length2 == 0 else max(0.0, min(1.0, ((px - a[0]) * dx + (py - a[1]) * dy) / length2))
+    return math.hypot(px - a[0] - t * dx, py - a[1] - t * dy)
+
+
+def samples(a, b):
+    """Pixels along a projected segment, one per pixel of length, ends included."""
+    n = max(1, int(math.hypot(b[0] - a[0], b[1] - a[1])))
+    return {(int(a[0] + (b[0] - a[0]) * k / n), int(a[1] + (b[1] - a[1]) * k / n)) for k in range(n + 1)}
+
+
+def string_segments(sidecar):
+    return [(project(sidecar, c["point_tool"]), project(sidecar, c["point_other"])) for c in sidecar["contacts"]]
+
+
+def polyline_segments(sidecar):
+    out = []
+    for line in sidecar["polylines"]:
+        pts = [project(sidecar, p) for p in line]
+        out += list(zip(pts, pts[1:]))
+    return out
+
+
+def on_ramp(rgb):
+    """The strings' colours: green through yellow to red, no blue."""
+    return rgb[2] == 0 and (rgb[0] == 255 or rgb[1] == 255)
+
+
+def obj_vertices(path):
+    with open(path) as f:
+        return [tuple(float(x) for x in line.split()[1:4]) for line in f if line.startswith("v ")]
+
+
+class ViewerTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        d = cls.tmp.name
+        near = ("--cutoff", "0.01", "--msaa", "1")
+        cls.near_strings = render(d, "near-strings", NEAR, "strings", *near)
+        cls.near_none = render(d, "near-none", NEAR, "none", *near)
+        cls.near_all = render(d, "near-all", NEAR, "all", *near)
+        cls.near_no_strings = render(d, "near-no-strings", NEAR, "meshes,polylines,force,hud,grid", *near)
+        cls.side_all = render(d, "side-all", SIDE, "all", *near)
+        cls.side_no_strings = render(d, "side-no-strings", SIDE, "meshes,polylines,force,hud,grid", *near)
+        cls.near_hud = render(d, "near-hud", NEAR, "hud", *near)
+        cls.near_meshes = render(d, "near-meshes", NEAR, "meshes", *near)
+        cls.near_strings_4x = render(d, "near-strings-4x", NEAR, "strings", "--cutoff", "0.01", "--msaa", "4")
+        cls.near_none_4x = render(d, "near-none-4x", NEAR, "none", "--cutoff", "0.01", "--msaa", "4")
+        cls.crossing_polylines = render(d, "crossing-polylines", CROSSING, "polylines", "--msaa", "1")
+        cls.crossing_none = render(d, "crossing-none", CROSSING, "none", "--msaa", "1")
+        cls.crossing_all = render(d, "crossing-all", CROSSING, "all", "--msaa", "1")
+        cls.crossing_no_polylines = render(d, "crossing-no-polylines", CROSSING, "meshes,strings,force,hud,grid",
+                                           "--msaa", "1")
+        cls.far_all = render(d, "far-all", FAR, "all", "--msaa", "1")
+        cls.far_no_strings = render(d, "far-no-strings", FAR, "meshes,polylines,force,hud,grid", "--msaa", "1")
+        cls.far_no_polylines = render(d, "far-no-polylines", FAR, "meshes,strings,force,hud,grid", "--msaa", "1")
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def assert_changes_follow(self, with_, without, segments, radius, colour_ok, what):
+        image, sidecar = with_
+        diff = changed(image, without[0])
+        self.assertTrue(segments, f"the scene has no {what}")
+        # Every changed pixel lies on a projected segment (its centre within the line's radius, plus a pixel).
+        stray = [p for p in diff
+                 if min(distance_to_segment(p[0] + 0.5, p[1] + 0.5, a, b) for a, b in segments) > radius + 1.0]
+        self.assertEqual(stray, [], f"pixels changed away from every projected {what}")
+        # ... and every pixel along every projected segment changed, to a colour of its kind.
+        for a, b in segments:
+            for p in samples(a, b):
+                if 0 <= p[0] < image.width and 0 <= p[1] < image.height:
+                    self.assertIn(p, diff, f"{what} from {a[:2]} to {b[:2]}: pixel {p} did not change")
+                    self.assertTrue(colour_ok(image.pixel(*p)), f"{what}: pixel {p} is {image.pixel(*p)}")
+        return diff
+
+    def test_strings_are_exactly_where_the_contacts_project(self):
+        sidecar = self.near_strings[1]
+        self.assertEqual(len(sidecar["contacts"]), 8)
+        self.assert_changes_follow(self.near_strings, self.near_none, string_segments(sidecar), STRING_RADIUS,
+                                   on_ramp, "string")
+
+    def test_strings_are_where_the_contacts_project_with_4x_msaa(self):
+        # Resolved edges blend with the background: the colour test is on the pixels' centres only.
+        sidecar = self.near_strings_4x[1]
+        self.assertEqual(len(sidecar["contacts"]), 8)
+        self.assert_changes_follow(self.near_strings_4x, self.near_none_4x, string_segments(sidecar),
+                                   STRING_RADIUS, lambda rgb: rgb[2] <= 40, "string")
+
+    def test_string_colour_follows_the_distance_ramp(self):
+        # Green at the cutoff, yellow half way, red at the safety distance (hard: 0.3 mm).
+        image, sidecar = self.near_strings
+        segments = string_segments(sidecar)
+        checked = 0
+        for i, c in enumerate(sidecar["contacts"]):
+            a, b = segments[i]
+            mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+            if any(j != i and distance_to_segment(mid[0], mid[1], *segments[j]) < 2 * STRING_RADIUS + 2
+                   for j in range(len(segments))):
+                continue  # another string crosses here
+            t = max(0.0, min(1.0, (c["distance"] - 0.0003) / (0.01 - 0.0003)))
+            want = (255 if t < 0.5 else round(510 * (1 - t)), round(510 * t) if t < 0.5 else 255, 0)
+            got = image.pixel(int(mid[0]), int(mid[1]))
+            for k in range(3):
+                self.assertLessEqual(abs(got[k] - want[k]), 2, f"contact {i} at {c['distance']} m: {got}, not {want}")
+            checked += 1
+        self.assertGreater(checked, 0, "every string's middle is crossed by another")
+
+    def test_in_the_whole_scene_strings_change_only_their_own_pixels(self):
+        # Strings lie in the gap between two surfaces, so the meshes hide most of them.
+        for (image, sidecar), without, visible in ((self.near_all, self.near_no_strings, 0),
+                                                   (self.side_all, self.side_no_strings, 1)):
+            diff = changed(image, without[0])
+            segments = string_segments(sidecar)
+            self.assertTrue(segments)
+            self.assertGreaterEqual(len(diff), visible, "the strings are hidden in the whole scene")
+            stray = [p for p in diff
+                     if min(distance_to_segment(p[0] + 0.5, p[1] + 0.5, a, b) for a, b in segments) > STRING_RADIUS + 1]
+            self.assertEqual(stray, [])
+            self.assertTrue(all(on_ramp(image.pixel(*p)) for p in diff))
+
+    def test_polylines_are_where_the_meshes_cross(self):
+        sidecar = self.crossing_polylines[1]
+        self.assertGreater(len(sidecar["polylines"]), 0)
+        self.assert_changes_follow(self.crossing_polylines, self.crossing_none, polyline_segments(sidecar),
+                                   POLYLINE_RADIUS, lambda rgb: rgb == MAGENTA, "polyline")
+
+    def test_in_the_whole_scene_polylines_show_and_change_only_their_own_pixels(self):
+        image, sidecar = self.crossing_all
+        diff = changed(image, self.crossing_no_polylines[0])
+        segments = polyline_segments(sidecar)
+        self.assertGreater(len([p for p in diff if image.pixel(*p) == MAGENTA]), 20)
+        stray = [p for p in diff
+                 if min(distance_to_segment(p[0] + 0.5, p[1] + 0.5, a, b) for a, b in segments) > POLYLINE_RADIUS + 1]
+        self.assertEqual(stray, [])
+        # No string shares the polylines' colour.
+        strings = self.near_strings[0]
+        self.assertFalse(any(strings.pixel(x, y) == MAGENTA for x in range(strings.width) for y in range(strings.height)))
+
+    def test_nothing_of_either_when_far_apart(self):
+        image, sidecar = self.far_all
+        self.assertEqual(sidecar["contacts"], [])
+        self.assertEqual(sidecar["polylines"], [])
+        self.assertEqual(sidecar["force"], [0, 0, 0])
+        self.assertEqual(changed(image, self.far_no_strings[0]), set())
+        self.assertEqual(changed(image, self.far_no_polylines[0]), set())
+        pixels = [image.pixel(x, y) for y in range(image.height) for x in range(image.width)]
+        self.assertNotIn(MAGENTA, pixels)
+        self.assertFalse(any(on_ramp(p) for p in pixels), "a string-coloured pixel with no contact")
+
+    def test_sidecar_matches_the_frame(self):
+        image, sidecar = self.near_all
+        self.assertEqual(sidecar["viewport"], [image.width, image.height])
+        self.assertEqual(tuple(sidecar["background"]), image.pixel(image.width - 1, 0))
+        self.assertEqual(len(sidecar["view"]), 16)
+        self.assertEqual(len(sidecar["proj"]), 16)
+        self.assertEqual(len(sidecar["force"]), 3)
+        self.assertEqual(len(sidecar["torque"]), 3)
+        # Near surfaces push the tool (B, at +z) away from A: +z.
+        self.assertGreater(sidecar["force"][2], 0.0)
+        for c in sidecar["contacts"]:
+            self.assertAlmostEqual(math.dist(c["point_tool"], c["point_other"]), c["distance"], delta=1e-9)
+
+    def test_hud_is_a_panel_in_the_top_left_corner(self):
+        image, _ = self.near_hud
+        diff = changed(image, self.near_none[0])
+        self.assertGreater(len(diff), 2000, "no HUD")
+        self.assertLess(max(x for x, _ in diff), image.width * 3 // 4)
+        self.assertLess(max(y for _, y in diff), image.height * 3 // 4)
+        self.assertLess(min(x for x, _ in diff), 20)
+        self.assertLess(min(y for _, y in diff), 20)
+
+    def test_meshes_cover_where_they_project(self):
+        image, sidecar = self.near_meshes
+        diff = changed(image, self.near_none[0])
+        verts = obj_vertices(os.path.join(ASSETS, "bunny.obj"))
+        offset = [float(x) for x in NEAR[:3]]
+        masks, inside = [], 0
+        for shift in ((0.0, 0.0, 0.0), offset):
+            mask = set()
+            for v in verts:
+                x, y, z = project(sidecar, [v[0] + shift[0], v[1] + shift[1], v[2] + shift[2]])
+                self.assertTrue(0 <= x < image.width and 0 <= y < image.height and 0 < z < 1,
+                                f"vertex {v} projects outside the frame: the camera does not frame the scene")
+                inside += (int(x), int(y)) in diff or any((int(x) + dx, int(y) + dy) in diff
+                                                          for dx in (-1, 0, 1) for dy in (-1, 0, 1))
+                mask |= {(int(x) + dx, int(y) + dy) for dx in range(-2, 3) for dy in range(-2, 3)}
+            masks.append(mask)
+        self.assertGreaterEqual(inside, 0.99 * 2 * len(verts), "projected vertices on unchanged pixels")
+        covered = masks[0] | masks[1]
+        self.assertGreaterEqual(len([p for p in diff if p in covered]), 0.995 * len(diff),
+                                "pixels drawn away from every projected vertex")
+        # The tool in its own colour: bluer than red where only it projects; A the other way round.
+        only_tool = [image.pixel(*p) for p in diff if p in masks[1] and p not in masks[0]]
+        only_a = [image.pixel(*p) for p in diff if p in masks[0] and p not in masks[1]]
+        self.assertGreater(len(only_tool), 1000)
+        self.assertGreater(len(only_a), 1000)
+        self.assertGreaterEqual(sum(p[2] > p[0] for p in only_tool), 0.95 * len(only_tool))
+        self.assertGreaterEqual(sum(p[0] > p[2] for p in only_a), 0.95 * len(only_a))
+
+
+class ViewerRunTest(unittest.TestCase):
+    def test_the_built_in_scene_moves_the_tool_on_the_threads(self):
+        with tempfile.TemporaryDirectory() as d:
+            # Legs of 30 ms: the 60 frames see the path loop more than once, however fast they are.
+            r = run("--headless", "--validation", "--frames", "60", "--seconds", "0.03", "--size", "320x180",
+                    "--msaa", "1", "--out", d)
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+            self.assertNotRegex(r.stderr, VALIDATION)
+            self.assertRegex(r.stdout, r"haptic thread +\d+\.\d Hz")
+            counts = []
+            for i in range(60):
+                with open(os.path.join(d, f"frame-{i:04d}.json")) as f:
+                    s = json.load(f)
+                counts.append(len(s["contacts"]))
+            # Path T: in and out of the cutoff, and held near with contacts.
+            self.assertGreater(max(counts), 0, counts)
+            self.assertIn(0, counts)
+
+    def test_a_poses_file_drives_the_scripted_device(self):
+        with tempfile.TemporaryDirectory() as d:
+            poses = os.path.join(d, "poses.txt")
+            with open(poses, "w") as f:
+                f.write("# A against A: from 0.3 m out to 1 mm apart along x (the shared bunny's path T end)\n")
+                f.write("0.3 0 0 1 0 0 0\n0.14 0 0 1 0 0 0\n0.14 0 0 1 0 0 0\n")
+            bunny = os.path.join(ASSETS, "bunny.obj")
+            r = run(bunny, bunny, "--poses", poses, "--seconds", "0.1", "--headless", "--validation", "--frames", "150",
+                    "--size", "160x90", "--msaa", "1", "--show", "none", "--out", d)
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+            counts = []
+            for i in range(150):
+                with open(os.path.join(d, f"frame-{i:04d}.json")) as f:
+                    counts.append(len(json.load(f)["contacts"]))
+            # The path loops: out of range at its start, within the cutoff where it holds.
+            self.assertIn(0, counts)
+            self.assertGreater(max(counts), 0, counts)
+
+    def test_method_and_force_reach_the_world(self):
+        def scene(pose, method, force):
+            with tempfile.TemporaryDirectory() as d:
+                bunny = os.path.join(ASSETS, "bunny.obj")
+                r = run(bunny, bunny, "--pose-b", *pose, "--method", method, "--force", force, "--cutoff", "0.01",
+                        "--headless", "--validation", "--size", "160x90", "--show", "none", "--out", d)
+                self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+                with open(os.path.join(d, "frame-0000.json")) as f:
+                    s = json.load(f)
+                return len(s["contacts"]), math.hypot(*s["force"])
+
+        # The near scene's 8 LMDs within 10 mm (precise); the original method's 7 x 7 samples find others.
+        precise, original = scene(NEAR, "precise", "hard"), scene(NEAR, "original", "hard")
+        self.assertEqual(precise[0], 8)
+        self.assertGreater(original[0], 0)
+        self.assertNotEqual(original, precise)
+        # 1 mm apart: soft (full force inside 2 mm) renders the 3 N maximum; hard (safety 0.3 mm, decay
+        # 0.3 mm) e^-(0.7/0.3) of it per contact.
+        self.assertAlmostEqual(scene(SIDE, "precise", "soft")[1], 3.0, places=6)
+        self.assertLess(scene(SIDE, "precise", "hard")[1], 1.0)
+
+    def test_bad_input_gets_a_clear_error(self):
+        bunny = os.path.join(ASSETS, "bunny.obj")
+        with tempfile.TemporaryDirectory() as d:
+            missing = os.path.join(d, "missing.obj")
+            cases = [
+                ((missing, bunny, "--headless"), 1, "missing.obj"),
+                ((os.path.join(ASSETS, "gltf", "Duck.glb"), bunny, "--headless"), 1, "OBJ"),
+                (("--show", "strings,bogus"), 2, "bogus"),
+                (("--size", "640"), 2, "WxH"),
+                (("--msaa", "2"), 2, "--msaa"),
+                (("--frames", "0"), 2, "--frames"),
+                (("--device", "mouse", "--headless"), 2, "window"),
+                (("--device", "joystick"), 2, "joystick"),
+                (("--pose-b", "0", "0", "0", "0", "0", "0", "0"), 2, "quaternion"),
+                ((bunny,), 2, "two meshes"),
+                (("--poses", missing, "--headless"), 1, "missing.obj"),
+                (("--out", d, "--frames", "2"), 2, "--headless"),
+            ]
+            for args, code, text in cases:
+                with self.subTest(args=args):
+                    r = run(*args)
+                    self.assertEqual(r.returncode, code, r.stdout + r.stderr)
+                    self.assertIn(text, r.stderr)
+                    self.assertTrue(r.stderr.startswith("proxima-viewer: "), r.stderr)
+
+    def test_no_display_for_a_window(self):
+        env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
+        r = run("--frames", "1", env=env)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("no display", r.stderr)
+        self.assertIn("--headless", r.stderr)
+
+    def test_no_vulkan_device(self):
+        env = dict(os.environ, VK_ICD_FILENAMES="/nonexistent/icd.json", VK_DRIVER_FILES="/nonexistent/icd.json")
+        r = run("--headless", env=env)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("Vulkan", r.stderr)
+        self.assertTrue(r.stderr.startswith("proxima-viewer: "), r.stderr)
+
+    def test_help_lists_the_options(self):
+        r = run("--help")
+        self.assertEqual(r.returncode, 0)
+        for option in ("--pose-b", "--cutoff", "--headless", "--frames", "--out", "--size", "--show", "--validation",
+                       "--device", "--poses", "--method", "--force", "auto"):
+            self.assertIn(option, r.stdout)
+
+
+if __name__ == "__main__":
+    VIEWER = os.path.abspath(sys.argv.pop(1))
+    ASSETS = os.path.abspath(sys.argv.pop(1))
+    unittest.main()
