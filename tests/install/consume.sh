@@ -11,6 +11,7 @@
 # apt-get instead, builds against /usr, and removes them again.
 set -euo pipefail
 mode=$1
+version=${PROX_VERSION:?PROX_VERSION (the project version, major.minor.patch) must be set}
 build=$(cd "$2" && pwd) source=$(cd "$3" && pwd) assets=$(cd "$4" && pwd) work=$(realpath -m "$5")
 hello_source="$source/samples/hello/hello.c"
 mesh="$assets/bunny.obj"
@@ -83,10 +84,10 @@ case $mode in
   tree)
     cmake --install "$build" --prefix "$work/prefix" >"$work/install.log" || fail "cmake --install"
     # lib, or lib/<multiarch> for a /usr prefix (GNUInstallDirs).
-    library=$(find "$work/prefix" -name libproxima.so.0.1.0 | head -1)
-    [ -n "$library" ] || fail "cmake --install did not install libproxima.so.0.1.0"
+    library=$(find "$work/prefix" -name libproxima.so.$version | head -1)
+    [ -n "$library" ] || fail "cmake --install did not install libproxima.so.$version"
     lib=${library#"$work/prefix/"}
-    lib=${lib%/libproxima.so.0.1.0}
+    lib=${lib%/libproxima.so.$version}
     for f in $lib/libproxima.so.0 $lib/libproxima.so include/proxima/proxima.h include/proxima/version.h \
       $lib/cmake/proxima/proximaConfig.cmake $lib/cmake/proxima/proximaConfigVersion.cmake \
       $lib/cmake/proxima/proximaTargets.cmake $lib/pkgconfig/proxima.pc; do
@@ -96,7 +97,7 @@ case $mode in
       fail "libproxima.so does not link to libproxima.so.0"
     soname=$(readelf -d "$library" | sed -n 's/.*SONAME.*\[\(.*\)\]/\1/p')
     [ "$soname" = libproxima.so.0 ] || fail "SONAME is '$soname', not libproxima.so.0"
-    echo "ok: install tree: $lib/libproxima.so.0.1.0 (SONAME $soname), headers, CMake package, pkg-config file"
+    echo "ok: install tree: $lib/libproxima.so.$version (SONAME $soname), headers, CMake package, pkg-config file"
     consume_prefix "$work/prefix" "$work/prefix/$lib" "$work/prefix/$lib/pkgconfig" "install tree"
     ;;
   deb)
@@ -107,11 +108,12 @@ case $mode in
     [ "$(dpkg-deb -f "$runtime" Package)" = libproxima0 ] || fail "$runtime is not package libproxima0"
     [ "$(dpkg-deb -f "$dev" Package)" = libproxima-dev ] || fail "$dev is not package libproxima-dev"
     dpkg-deb -f "$runtime" Depends | grep -q "libstdc++6" || fail "libproxima0 does not depend on libstdc++6"
-    dpkg-deb -f "$dev" Depends | grep -q "libproxima0 (= 0.1.0)" || fail "libproxima-dev does not depend on libproxima0 (= 0.1.0)"
+    dpkg-deb -f "$dev" Depends | grep -q "libproxima0 (= $version)" || fail "libproxima-dev does not depend on libproxima0 (= $version)"
     # The runtime package holds the library and its SONAME link only.
     runtime_files=$(dpkg-deb -c "$runtime" | awk '{print $6}' | grep -v '/$' | sort | tr '\n' ' ')
-    lib=$(dpkg-deb -c "$runtime" | awk '{print $6}' | sed -n 's|^\./usr/\(.*\)/libproxima\.so\.0\.1\.0$|\1|p')
-    [ -n "$lib" ] && [ "$runtime_files" = "./usr/$lib/libproxima.so.0 ./usr/$lib/libproxima.so.0.1.0 " ] ||
+    version_re=$(printf '%s' "$version" | sed 's/\./\\./g')
+    lib=$(dpkg-deb -c "$runtime" | awk '{print $6}' | sed -n "s|^\./usr/\(.*\)/libproxima\.so\.$version_re\$|\1|p")
+    [ -n "$lib" ] && [ "$runtime_files" = "./usr/$lib/libproxima.so.0 ./usr/$lib/libproxima.so.$version " ] ||
       fail "libproxima0 holds: $runtime_files"
     for f in ./usr/$lib/libproxima.so ./usr/include/proxima/proxima.h ./usr/$lib/cmake/proxima/proximaConfig.cmake \
       ./usr/$lib/pkgconfig/proxima.pc; do
