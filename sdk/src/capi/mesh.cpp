@@ -22,7 +22,9 @@ proxMeshId make_mesh_id(proxWorldId world, runtime::Handle h) { return {h.index 
 
 uint64_t warnings_key(const proxMeshId& mesh) { return uint64_t{mesh.index1 - 1} << 32 | mesh.generation; }
 
-// Records what loading `mesh` skipped, for proxMesh_GetWarnings.
+#if PROX_WITH_GLTF
+// Records what loading `mesh` skipped, for proxMesh_GetWarnings (only the
+// glTF reader skips anything).
 void keep_warnings(const proxMeshId& mesh, const std::vector<std::string>& warnings) {
   if (warnings.empty()) return;
   std::string text;
@@ -30,6 +32,7 @@ void keep_warnings(const proxMeshId& mesh, const std::vector<std::string>& warni
   std::lock_guard<std::mutex> lock(g_worlds_mutex);
   g_worlds[mesh.world.index1 - 1].mesh_warnings[warnings_key(mesh)] = std::move(text);
 }
+#endif
 
 // `source`: the file the data came from, named in the error when it is not
 // a valid mesh.
