@@ -1,6 +1,7 @@
 """Worlds, meshes and bodies over the C API."""
 
 import atexit
+import dataclasses
 import math
 import os
 import threading
@@ -47,6 +48,13 @@ class World:
         d.method = enum_value("proxMethod", method, "method")
         if isinstance(force, str):
             settings, default_cutoff = force_preset(force)
+            if cutoff is not None:
+                # A preset is a shape relative to its cutoff: at another
+                # cutoff its safety distance and decay length scale with it
+                # (as the CLI's --cutoff does), so any positive cutoff works.
+                k = real(cutoff, "cutoff") / default_cutoff
+                settings = dataclasses.replace(settings, safety_distance=settings.safety_distance * k,
+                                               decay_length=settings.decay_length * k)
         elif isinstance(force, ForceSettings):
             settings, default_cutoff = force, d.cutoff
         else:

@@ -7,7 +7,8 @@ namespace Proxima
     public sealed class WorldSettings
     {
         public Method Method = Method.Precise;
-        /// <summary>The force curve's preset; its cutoff is used unless Cutoff is set.</summary>
+        /// <summary>The force curve's preset; its cutoff is used unless Cutoff is set, and then its
+        /// safety distance and decay length scale with the cutoff.</summary>
         public ForcePreset Force = ForcePreset.Hard;
         /// <summary>m: contacts farther apart are not wanted (> 0). NaN: the preset's.</summary>
         public double Cutoff = double.NaN;
@@ -32,7 +33,15 @@ namespace Proxima
             WorldDef def = Native.proxDefaultWorldDef();
             def.Method = settings.Method;
             Native.Check(Native.proxGetForcePreset(settings.Force, out def.Force, out def.Cutoff));
-            if (!double.IsNaN(settings.Cutoff)) def.Cutoff = settings.Cutoff;
+            if (!double.IsNaN(settings.Cutoff))
+            {
+                // A preset is a shape relative to its cutoff: at another cutoff its safety
+                // distance and decay length scale with it (as the CLI's --cutoff does).
+                double k = settings.Cutoff / def.Cutoff;
+                def.Cutoff = settings.Cutoff;
+                def.Force.SafetyDistance *= k;
+                def.Force.DecayLength *= k;
+            }
             if (settings.CustomForce.HasValue) def.Force = settings.CustomForce.Value;
             Native.Check(Native.proxCreateWorld(ref def, out id));
         }
