@@ -200,7 +200,7 @@ TEST_F(Timing, ARefusedPriorityOrMemoryLockIsReportedNotFatal) {
   EXPECT_EQ(local.realtimeError, EPERM);
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
   // The sanitizers replace mlockall with a no-op that succeeds (locking
-  // its shadow memory would take the machine's): nothing to refuse here.
+  // their shadow memory would take the machine's): nothing to refuse here.
   EXPECT_EQ(s.memoryLocked, 1);
 #else
   EXPECT_EQ(s.memoryLocked, 0);
