@@ -1,10 +1,8 @@
-// The triangles the viewer draws. The C API hands out contacts, not mesh
-// data, so the viewer reads the file itself (OBJ only: positions and faces)
-// to draw exactly what the world was given.
+// The triangles the viewer draws: exactly what the world was given, as the
+// C API hands it back (proxMesh_GetTriangles), whatever file it came from.
 #pragma once
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
 namespace viewer {
@@ -13,11 +11,5 @@ struct RenderMesh {
   std::vector<float> positions;   // x, y, z per vertex, in the mesh's frame
   std::vector<uint32_t> indices;  // three per triangle
 };
-
-// Reads the v and f records of an OBJ file (polygons fanned into
-// triangles, negative indices counted from the end). Throws
-// std::runtime_error naming the file and line on malformed input, and for
-// any file that is not .obj.
-RenderMesh read_render_mesh(const std::string& path);
 
 }  // namespace viewer

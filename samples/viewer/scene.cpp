@@ -266,4 +266,18 @@ std::vector<double> Scene::force_shares(const std::vector<proxContact>& contacts
   return w;
 }
 
+RenderMesh Scene::render_mesh(bool tool) const {
+  const proxMeshId mesh = tool ? mesh_b_ : mesh_a_;
+  uint32_t vertices = 0, triangles = 0;
+  const proxResult r = proxMesh_GetTriangles(mesh, nullptr, 0, &vertices, nullptr, 0, &triangles);
+  if (r != PROX_ERROR_CAPACITY) check(r);
+  std::vector<double> positions(3 * std::size_t{vertices});
+  RenderMesh out;
+  out.indices.resize(3 * std::size_t{triangles});
+  check(proxMesh_GetTriangles(mesh, positions.data(), vertices, &vertices, out.indices.data(), triangles,
+                              &triangles));
+  out.positions.assign(positions.begin(), positions.end());
+  return out;
+}
+
 }  // namespace viewer

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "options.h"
+#include "render_mesh.h"
 
 #include <proxima/proxima.h>
 
@@ -58,6 +59,9 @@ class Scene {
   // What the streamed device saw; false when no streamed device drives the tool.
   bool stream_stats(proxStreamDeviceStats* stats) const;
   proxPose tool_pose() const;
+  // The triangles of mesh A, or of the tool's mesh, to draw (the world's own,
+  // welded: any file the library reads).
+  RenderMesh render_mesh(bool tool) const;
 
   // The box the camera frames: both bodies over the tool's whole path.
   glm::dvec3 bounds_min() const { return bounds_min_; }
