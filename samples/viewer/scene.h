@@ -34,6 +34,8 @@ struct FrameData {
   std::vector<Polyline> polylines;
   bool polylines_valid = false;  // computed at polylines_pose: kept while the tool stays there
   proxPose polylines_pose{};
+  std::vector<proxVec3> polyline_points;         // the C API's output buffers, kept
+  std::vector<proxPolylineInfo> polyline_infos;  // from frame to frame
   proxWrench wrench{};
   bool threads = false;               // the world's threads run (else it was stepped)
   proxThreadStats thread_stats[3]{};  // haptic, local, global
