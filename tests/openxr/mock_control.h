@@ -35,7 +35,8 @@ typedef struct ProxMockXrVibration {
 typedef struct ProxMockXrControl {
   /* Replaces the script (at most 64 keys). With none (the default) the
    * grip moves forward and back along -z from (0.1, 1.2, -0.3) by 0.15 m
-   * every 4 s. */
+   * every 4 s,
+   * starting at rest when it is first located. */
   void (*setScript)(const ProxMockXrKey* keys, int32_t count);
   /* 0: the grip is untracked (located with no valid bit). */
   void (*setTracked)(int32_t tracked);

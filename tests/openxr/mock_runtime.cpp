@@ -123,6 +123,7 @@ struct State {
   std::deque<XrSessionState> events;
   std::vector<XrActionSet> synced;  // the sets of the last xrSyncActions
   XrTime last_wait = 0;
+  XrTime first_located = 0;  // the default motion starts at rest when the grip is first located
   std::vector<ProxMockXrKey> script;
   bool tracked = true;
   std::vector<ProxMockXrVibration> log;
@@ -171,7 +172,9 @@ Pose grip_at(XrTime t, V* velocity, V* angular) {
   *velocity = {0, 0, 0};
   *angular = {0, 0, 0};
   if (g.script.empty()) {
-    const double s = double(t % 4000000000LL) * 1e-9, w = 2 * M_PI / 4.0;
+    if (g.first_located == 0) g.first_located = t;
+    const double s = double(std::max<XrTime>(0, t - g.first_located) % 4000000000LL) * 1e-9,
+                 w = 2 * M_PI / 4.0;
     const double z = -0.3 - 0.075 * (1 - std::cos(w * s));
     velocity->z = -0.075 * w * std::sin(w * s);
     return {{1, 0, 0, 0}, {0.1, 1.2, z}};
@@ -249,6 +252,7 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateInstance(const XrInstanceCreateInfo* info, 
   g.session = g.running = g.attached = g.exit_requested = g.frame_begun = false;
   g.state = XR_SESSION_STATE_UNKNOWN;
   g.instance = true;
+  g.first_located = 0;
   g.headless = headless;
   g.timespec = timespec;
   *instance = kInstance;
