@@ -590,7 +590,7 @@ bool world_pose(const Space& s, XrTime t, Pose* pose, V* velocity, V* angular) {
     *pose = s.offset;
     return true;
   }
-  if (!action_active(s.poseAction, s.subaction) || !g.tracked) return false;
+  if (!action_active(s.poseAction, s.subaction)) return false;
   const Pose grip = grip_at(t, velocity, angular);
   // The offset's lever arm adds omega x r to the linear velocity.
   const V r = rotate(grip.q, s.offset.p);
@@ -621,6 +621,10 @@ XRAPI_ATTR XrResult XRAPI_CALL LocateSpace(XrSpace space, XrSpace base, XrTime t
     return XR_SUCCESS;
   const Pose inv = inverse(pb);
   location->pose = to_xr(compose(inv, ps));
+  // Untracked: the pose is left where the script has it (a runtime's pose
+  // without valid bits means nothing), so a caller that ignores the bits
+  // keeps the tool in contact and is caught.
+  if (s->second->action && !g.tracked) return XR_SUCCESS;
   location->locationFlags = XR_SPACE_LOCATION_POSITION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_VALID_BIT |
                             XR_SPACE_LOCATION_POSITION_TRACKED_BIT |
                             XR_SPACE_LOCATION_ORIENTATION_TRACKED_BIT;
