@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <thread>
 #include <tuple>
 #include <vector>
@@ -247,6 +249,31 @@ TEST(XrDevice, TrackingLossFadesTheForce) {
 
   mock_control().setTracked(1);
   ASSERT_TRUE(app.pump_until([&] { return scene.force() > 0.0; })) << "the force did not come back";
+
+  prox_check(proxXrDevice_Destroy(device), "proxXrDevice_Destroy");
+  app.destroy();
+  EXPECT_EQ(validation_errors(app), "");
+}
+
+// A runtime reporting a non-finite pose with its valid bits set: the device
+// treats it as untracked, and no NaN reaches the tool or the force.
+TEST(XrDevice, NonFinitePoseNeverReachesTheTool) {
+  XrApp app;
+  XrScene scene;
+  ASSERT_TRUE(app.pump_until([&] { return app.state == XR_SESSION_STATE_FOCUSED; }));
+  scene.hold(scene.near_tool());
+  const proxXrDeviceId device = scene.start(app, scene.def(app));
+  ASSERT_TRUE(app.pump_until([&] { return scene.force() > 0.0; }));
+
+  ProxMockXrKey key{mock_control().now(), to_xr(scene.grip_for(scene.near_tool()))};
+  key.pose.position.y = std::numeric_limits<float>::quiet_NaN();
+  mock_control().setScript(&key, 1);
+  const uint64_t untracked = stats_of(device).untrackedTicks;
+  ASSERT_TRUE(app.pump_until([&] { return scene.force() == 0.0; })) << "the force did not fade";
+  EXPECT_GT(stats_of(device).untrackedTicks, untracked + 10);
+  const proxPose p = scene.tool_pose();
+  EXPECT_TRUE(std::isfinite(p.position.x) && std::isfinite(p.position.y) && std::isfinite(p.position.z));
+  EXPECT_TRUE(std::isfinite(scene.force()));
 
   prox_check(proxXrDevice_Destroy(device), "proxXrDevice_Destroy");
   app.destroy();

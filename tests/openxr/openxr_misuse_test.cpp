@@ -170,6 +170,13 @@ TEST(XrHelpers, ActionsAndBindings) {
   EXPECT_EQ(b[0].action, app.pose);
   xr_check(xrPathToString(app.instance, b[1].binding, sizeof path, &n, path), "xrPathToString");
   EXPECT_STREQ(path, "/user/hand/left/output/haptic");
+  // The hand's path names it too.
+  ASSERT_EQ(proxXrGetSuggestedBindings(xrGetInstanceProcAddr, app.instance,
+                                       "/interaction_profiles/khr/simple_controller", "/user/hand/right",
+                                       app.pose, app.haptic, b, 2, &count),
+            PROX_SUCCESS);
+  xr_check(xrPathToString(app.instance, b[0].binding, sizeof path, &n, path), "xrPathToString");
+  EXPECT_STREQ(path, "/user/hand/right/input/grip/pose");
   // A profile without a haptic output gets the pose only.
   ASSERT_EQ(proxXrGetSuggestedBindings(xrGetInstanceProcAddr, app.instance,
                                        "/interaction_profiles/oculus/go_controller", "right", app.pose,

@@ -109,7 +109,7 @@ PROX_API proxResult proxXrCreateActions(PFN_xrGetInstanceProcAddr gipa, XrInstan
                                         const char* namePrefix, XrAction* poseAction, XrAction* hapticAction);
 /* Fills the bindings Proxima's actions need in an interaction profile
  * ("/interaction_profiles/khr/simple_controller", ...) for a hand ("left"
- * or "right"), for the app to merge into its one
+ * or "right", or its path "/user/hand/left"), for the app to merge into its one
  * xrSuggestInteractionProfileBindings call for that profile. hapticAction
  * may be XR_NULL_HANDLE. PROX_ERROR_CAPACITY when capacity is too small
  * (*count says how many). Any thread. */

@@ -125,9 +125,11 @@ proxResult proxXrGetSuggestedBindings(PFN_xrGetInstanceProcAddr gipa, XrInstance
     if (poseAction == XR_NULL_HANDLE) fail(PROX_ERROR_INVALID_ARGUMENT, "poseAction is XR_NULL_HANDLE");
     if (capacity < 0) fail(PROX_ERROR_INVALID_ARGUMENT, "capacity must be >= 0");
     if (capacity > 0) need(bindings, "bindings");
-    const std::string side = hand;
+    std::string side = hand;
+    if (side.rfind("/user/hand/", 0) == 0) side = side.substr(11);  // the path works too
     if (side != "left" && side != "right")
-      fail(PROX_ERROR_INVALID_ARGUMENT, "hand must be \"left\" or \"right\" (it is \"" + side + "\")");
+      fail(PROX_ERROR_INVALID_ARGUMENT,
+           std::string("hand must be \"left\" or \"right\" (or /user/hand/...; it is \"") + hand + "\")");
     const Profile* profile = nullptr;
     for (const Profile& p : kProfiles)
       if (std::strcmp(p.path, interactionProfile) == 0) profile = &p;
