@@ -17,7 +17,8 @@ install(TARGETS proxima_capi proxima_headers EXPORT proximaTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/sdk/include/proxima DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-  COMPONENT development FILES_MATCHING PATTERN "*.h")
+  COMPONENT development FILES_MATCHING PATTERN "*.h"
+  PATTERN "proxima_openxr.h" EXCLUDE)  # only with the openxr component, below
 install(EXPORT proximaTargets NAMESPACE proxima:: DESTINATION ${PROX_INSTALL_CMAKEDIR}
   COMPONENT development)
 
@@ -29,6 +30,17 @@ if(PROX_WITH_GLTF)
   list(APPEND PROX_PACKAGE_COMPONENTS gltf)
 endif()
 set(PROX_KNOWN_COMPONENTS gltf)
+# openxr: the OpenXR device (proxima_openxr.h, docs/openxr.md). Its header
+# includes <openxr/openxr.h>, so the config finds OpenXR's headers when the
+# component is asked for, the .pc requires openxr.pc (libopenxr-dev; its
+# Cflags only: libproxima links no loader) and libproxima-dev depends on
+# libopenxr-dev.
+list(APPEND PROX_KNOWN_COMPONENTS openxr)
+if(PROX_WITH_OPENXR)
+  list(APPEND PROX_PACKAGE_COMPONENTS openxr)
+  install(FILES ${PROJECT_SOURCE_DIR}/sdk/include/proxima/proxima_openxr.h
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/proxima COMPONENT development)
+endif()
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/proximaConfig.cmake.in
   ${CMAKE_CURRENT_BINARY_DIR}/proximaConfig.cmake INSTALL_DESTINATION ${PROX_INSTALL_CMAKEDIR})
 # 0.x releases promise nothing across minor versions, but SameMajorVersion is
@@ -47,6 +59,9 @@ file(RELATIVE_PATH prox_pc_to_prefix "/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/")
 string(REGEX REPLACE "/$" "" prox_pc_to_prefix "${prox_pc_to_prefix}")
 set(PROX_PC_REQUIRES_PRIVATE "" CACHE INTERNAL "pkg-config modules libproxima.so links")
 set(PROX_PC_LIBS_PRIVATE "-lstdc++ -lm -pthread")
+if(PROX_WITH_OPENXR)
+  set(PROX_PC_REQUIRES_PRIVATE "${PROX_PC_REQUIRES_PRIVATE} openxr" CACHE INTERNAL "")
+endif()
 configure_file(${CMAKE_CURRENT_LIST_DIR}/proxima.pc.in ${CMAKE_CURRENT_BINARY_DIR}/proxima.pc @ONLY)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/proxima.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
   COMPONENT development)
@@ -86,4 +101,7 @@ endif()
 set(prox_deb_stem "proxima_${PROJECT_VERSION}_${CPACK_DEBIAN_PACKAGE_ARCHITECTURE}")
 set(CPACK_DEBIAN_RUNTIME_FILE_NAME "${prox_deb_stem}-libproxima${PROJECT_VERSION_MAJOR}.deb")
 set(CPACK_DEBIAN_DEVELOPMENT_FILE_NAME "${prox_deb_stem}-libproxima-dev.deb")
+if(PROX_WITH_OPENXR)
+  string(APPEND CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS ", libopenxr-dev")
+endif()
 include(CPack)
