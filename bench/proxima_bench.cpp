@@ -35,6 +35,10 @@
 
 #ifdef PROX_BENCH_WITH_COAL
 #include "coal_peer.h"
+#else
+namespace prox::bench {
+class CoalPeer;
+}
 #endif
 
 #include <glm/geometric.hpp>
@@ -139,7 +143,7 @@ struct Model {
   std::size_t fcl_memory_bytes = 0;
 #endif
 #ifdef PROX_BENCH_WITH_COAL
-  std::shared_ptr<const CoalMesh> coal;
+  std::uint32_t coal = 0;  // the peer's id for this mesh
   std::vector<double> coal_build_seconds;
 #endif
 };
@@ -212,7 +216,7 @@ void read_source(const MeshSource& source, const std::string& path, std::vector<
 #endif
 }
 
-std::shared_ptr<Model> load_model(const MeshSource& source, const std::string& meshes_dir) {
+std::shared_ptr<Model> load_model(const MeshSource& source, const std::string& meshes_dir, CoalPeer* coal) {
   auto model = std::make_shared<Model>();
   model->name = source.label;
   model->file = source.generated ? meshes_dir + "/" + source.file : asset_path(source.file);
@@ -269,11 +273,11 @@ std::shared_ptr<Model> load_model(const MeshSource& source, const std::string& m
                             sizeof(fcl::Vector3d) * static_cast<std::size_t>(bvh.num_vertices) + sizeof(bvh);
 #endif
 #ifdef PROX_BENCH_WITH_COAL
-  for (int i = 0; i < kBuildRepetitions; ++i) {
-    const CoalBuild built = coal_build(m);
-    model->coal = built.mesh;
-    model->coal_build_seconds.push_back(built.seconds);
-  }
+  const CoalBuild built = coal->build(m, kBuildRepetitions);
+  model->coal = built.mesh;
+  model->coal_build_seconds = built.seconds;
+#else
+  (void)coal;
 #endif
   std::printf(
       "%s: %u triangles, size %.3f m, largest / median triangle area %.0f; SNCH %u nodes, built in %.1f ms "
@@ -625,6 +629,7 @@ struct Options {
   int scaling_reference_every = 20;     // the reference on the scaling scenes (0: never)
   int max_triangles = 0;                // skip the scaling levels above this (0: none)
   int cad_poses = 300;                  // poses per CAD scene (at most --poses)
+  std::string coal_version;             // the peer's, when it runs
 };
 
 constexpr int kForceBatch = 100;
@@ -873,7 +878,7 @@ std::string summary_json(const SceneRun& run, const Options& opt) {
   j.field("fcl", false);
 #endif
 #ifdef PROX_BENCH_WITH_COAL
-  j.field("coal", true).field("coal_version", coal_version());
+  j.field("coal", true).field("coal_version", opt.coal_version);
 #else
   j.field("coal", false);
 #endif
@@ -1041,7 +1046,7 @@ ForceSettings scene_force(const Scene& scene, const Model& a, const Model& b) {
 }
 
 SceneRun run_scene(const Scene& scene, const Model& a, const Model& b, int poses, int reference_every,
-                   const Options& opt) {
+                   const Options& opt, CoalPeer* coal) {
   SceneRun run;
   run.scene = &scene;
   run.a = &a, run.b = &b;
@@ -1059,6 +1064,9 @@ SceneRun run_scene(const Scene& scene, const Model& a, const Model& b, int poses
   PairState state;
   MethodState methods[2] = {{Method::Precise, {}, {}, {}}, {Method::Original, {}, {}, {}}};
   std::vector<LmdPair> scratch;
+#ifndef PROX_BENCH_WITH_COAL
+  (void)coal;
+#endif
 #ifdef PROX_BENCH_WITH_FCL
   const fcl::Transform3d fcl_a = to_fcl(Pose{});
   fcl::DistanceRequestd request;
@@ -1138,7 +1146,7 @@ SceneRun run_scene(const Scene& scene, const Model& a, const Model& b, int poses
       // Every triangle pair within the cutoff: the pairs go in `candidates`.
       Row cr = base;
       cr.method = "coal";
-      const CoalMargin c = coal_margin_collide(*a.coal, *b.coal, p.pose, cutoff);
+      const CoalMargin c = coal->margin_collide(a.coal, b.coal, p.pose, cutoff);
       cr.query_ms = c.seconds * 1e3;
       cr.candidates = double(c.pairs);
       run.rows.push_back(cr);
@@ -1578,9 +1586,16 @@ int run(int argc, char** argv) {
   std::filesystem::create_directories(opt.out);
   std::printf("%s\n", kPeerNote);
 #ifdef PROX_BENCH_WITH_COAL
-  std::printf("Coal %s: collide with security_margin = the cutoff, every triangle pair within it.\n",
-              coal_version().c_str());
+  // Coal answers from a process of its own (coal_peer.h).
+  CoalPeer coal_peer(coal_peer_beside_self());
+  CoalPeer* coal = &coal_peer;
+  opt.coal_version = coal->version();
+  std::printf(
+      "Coal %s (proxima_coal_peer): collide with security_margin = the cutoff, every triangle pair within "
+      "it.\n",
+      opt.coal_version.c_str());
 #else
+  CoalPeer* coal = nullptr;
   std::printf("Coal: not built in (PROX_BENCH_WITH_COAL=OFF).\n");
 #endif
 #ifdef PROX_BENCH_WITH_FCL
@@ -1595,7 +1610,7 @@ int run(int argc, char** argv) {
     const std::string key = source.file + "#" + std::to_string(source.part) + "#" +
                             std::to_string(source.subdivisions) + "#" + std::to_string(source.scale);
     auto& m = models[key];
-    if (!m) m = load_model(source, opt.meshes);
+    if (!m) m = load_model(source, opt.meshes, coal);
     return m;
   };
   if (many_bodies) run_many_bodies(*model_of(bunny_source()), opt);
@@ -1623,7 +1638,7 @@ int run(int argc, char** argv) {
                                           : opt.poses;
     const int reference_every =
         scaling ? (opt.reference_every > 0 ? opt.scaling_reference_every : 0) : opt.reference_every;
-    const SceneRun r = run_scene(*s, *a, *b, poses, reference_every, opt);
+    const SceneRun r = run_scene(*s, *a, *b, poses, reference_every, opt, coal);
     write_file(opt.out + "/" + s->name + ".csv", csv(r));
     write_file(opt.out + "/" + s->name + ".json", summary_json(r, opt));
     print_summary(r);
