@@ -87,7 +87,8 @@ void read_source(const MeshSource& source, const std::string& path, std::vector<
 
 }  // namespace
 
-std::shared_ptr<Model> load_model(const MeshSource& source, const std::string& meshes_dir, CoalPeer* coal) {
+std::shared_ptr<Model> load_model(const MeshSource& source, const std::string& meshes_dir, int builds,
+                                  CoalPeer* coal) {
   auto model = std::make_shared<Model>();
   model->name = source.label;
   model->file = source.generated ? meshes_dir + "/" + source.file : asset_path(source.file);
@@ -116,18 +117,18 @@ std::shared_ptr<Model> load_model(const MeshSource& source, const std::string& m
   }
   model->centroid = area > 0.0 ? sum / area : model->box_centre;
   model->max_over_median_area = ratio(maximum(areas), median(areas));
-  for (int i = 0; i < kBuildRepetitions; ++i) {
+  for (int i = 0; i < builds; ++i) {
     model->snch = std::make_unique<Snch>(m);
     model->snch_build_seconds.push_back(model->snch->stats().build_seconds);
   }
 #ifdef PROX_BENCH_WITH_FCL
-  FclBuild fcl = fcl_build(m, kBuildRepetitions);
+  FclBuild fcl = fcl_build(m, builds);
   model->fcl = fcl.mesh;
   model->fcl_build_seconds = fcl.seconds;
   model->fcl_memory_bytes = fcl.memory_bytes;
 #endif
 #ifdef PROX_BENCH_WITH_COAL
-  const CoalBuild built = coal->build(m, kBuildRepetitions);
+  const CoalBuild built = coal->build(m, builds);
   model->coal = built.mesh;
   model->coal_build_seconds = built.seconds;
 #else
@@ -137,7 +138,7 @@ std::shared_ptr<Model> load_model(const MeshSource& source, const std::string& m
       "%s: %u triangles, size %.3f m, largest / median triangle area %.0f; SNCH %u nodes, built in %.1f ms "
       "(median of %d), %.2f MiB",
       model->name.c_str(), m.triangle_count(), model->size, model->max_over_median_area,
-      model->snch->stats().nodes, median(model->snch_build_seconds) * 1e3, kBuildRepetitions,
+      model->snch->stats().nodes, median(model->snch_build_seconds) * 1e3, builds,
       double(model->snch->stats().memory_bytes) / (1 << 20));
 #ifdef PROX_BENCH_WITH_FCL
   std::printf("; FCL OBBRSS BVH %.1f ms, %.2f MiB\n", median(model->fcl_build_seconds) * 1e3,

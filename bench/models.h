@@ -50,13 +50,13 @@ struct Model {
 #endif
 };
 
-inline constexpr int kBuildRepetitions = 3;  // hierarchy builds per mesh; the median is reported
-
 // The mesh under the shared assets (PROXIMA_ASSETS overrides the built-in folder).
 std::string asset_path(const std::string& name);
 
-// Loads, welds and builds every hierarchy of `source`; `coal` (may be null
-// when Coal is not built in) builds Coal's in its process.
-std::shared_ptr<Model> load_model(const MeshSource& source, const std::string& meshes_dir, CoalPeer* coal);
+// Loads, welds and builds every hierarchy of `source` `builds` times (the
+// median time is reported); `coal` (null when Coal is not built in) builds
+// Coal's in its process.
+std::shared_ptr<Model> load_model(const MeshSource& source, const std::string& meshes_dir, int builds,
+                                  CoalPeer* coal);
 
 }  // namespace prox::bench

@@ -3,7 +3,7 @@
 //
 //   proxima_bench [--scene NAME|GROUP|all] [--poses N] [--out DIR] [--reference-every K]
 //                 [--local-reps R] [--force-reps R] [--meshes DIR] [--scaling-poses N]
-//                 [--scaling-reference-every K] [--cad-poses N] [--max-triangles N] [--list]
+//                 [--scaling-reference-every K] [--cad-poses N] [--max-triangles N] [--builds N] [--list]
 //
 // Scenes come in groups: bunny (bunny against bunny on paths T and R, the
 // paper's hard and soft settings, many bodies), cad (2CylinderEngine and
@@ -49,7 +49,8 @@ namespace {
 const char* kUsage =
     "usage: proxima_bench [--scene NAME|GROUP|all] [--poses N] [--out DIR] [--reference-every K]\n"
     "                     [--local-reps R] [--force-reps R] [--meshes DIR] [--scaling-poses N]\n"
-    "                     [--scaling-reference-every K] [--cad-poses N] [--max-triangles N] [--list]";
+    "                     [--scaling-reference-every K] [--cad-poses N] [--max-triangles N] [--builds N] "
+    "[--list]";
 
 [[noreturn]] void usage_error(const std::string& message) { throw UserError(message + "\n" + kUsage); }
 
@@ -87,6 +88,8 @@ int run(int argc, char** argv) {
       opt.scaling_poses = parse_int(next(), "--scaling-poses", 2);
     else if (a == "--scaling-reference-every")
       opt.scaling_reference_every = parse_int(next(), "--scaling-reference-every", 0);
+    else if (a == "--builds")
+      opt.builds = parse_int(next(), "--builds", 1);
     else if (a == "--cad-poses")
       opt.cad_poses = parse_int(next(), "--cad-poses", 2);
     else if (a == "--max-triangles")
@@ -142,7 +145,7 @@ int run(int argc, char** argv) {
     const std::string key = source.file + "#" + std::to_string(source.part) + "#" +
                             std::to_string(source.subdivisions) + "#" + std::to_string(source.scale);
     auto& m = models[key];
-    if (!m) m = load_model(source, opt.meshes, coal);
+    if (!m) m = load_model(source, opt.meshes, opt.builds, coal);
     return m;
   };
   if (many_bodies) run_many_bodies(*model_of(bunny_source()), opt);

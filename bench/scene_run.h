@@ -24,6 +24,7 @@ struct Options {
   int scaling_reference_every = 20;     // the reference on the scaling scenes (0: never)
   int max_triangles = 0;                // skip the scaling levels above this (0: none)
   int cad_poses = 300;                  // poses per CAD scene (at most --poses)
+  int builds = 3;                       // hierarchy builds per mesh and library; the median is reported
   std::string coal_version;             // the peer's, when it runs
 };
 
