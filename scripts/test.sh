@@ -56,6 +56,10 @@ cmake --build build/fuzz -j "$jobs" --target proxima_fuzz_obj proxima_fuzz_poses
 tests/fuzz/run.sh build/fuzz "$(assets_dir)" "${PROX_FUZZ_SECONDS:-20}"
 
 echo "== release"
+# FCL, the scene benchmark's peer (never a dependency of the SDK): the smoke
+# run below measures against it, and the test Bench.PeersApart checks that no
+# benchmark executable loads two builds of one library (docs/benchmarks.md).
+need_packages libfcl-dev
 configure build/release -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_BENCHMARKS=ON
 cmake --build build/release -j "$jobs"
 echo "-- micro-benchmark smoke run"
@@ -69,7 +73,7 @@ if bench_venv --no-plots >/dev/null &&
 else
   echo "   fast-simplification could not be installed: scaling-2k and scaling-7k are skipped"
 fi
-build/release/bench/proxima_bench --scene all --poses 5 --meshes build/bench-meshes --out build/bench-smoke >/dev/null
+build/release/bench/proxima_bench --scene all --poses 5 --builds 1 --meshes build/bench-meshes --out build/bench-smoke >/dev/null
 build/release/bench/proxima_timing_bench --seconds 0.1 --out build/bench-smoke >/dev/null
 ctest --test-dir build/release --output-on-failure -j "$jobs"
 
