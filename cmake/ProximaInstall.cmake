@@ -16,8 +16,13 @@ install(TARGETS proxima_capi proxima_headers EXPORT proximaTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# Headers of optional parts this build lacks are left out.
+set(prox_header_excludes "")
+if(NOT PROX_WITH_HIDAPI)
+  list(APPEND prox_header_excludes PATTERN "proxima_hid.h" EXCLUDE)
+endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/sdk/include/proxima DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-  COMPONENT development FILES_MATCHING PATTERN "*.h")
+  COMPONENT development FILES_MATCHING PATTERN "*.h" ${prox_header_excludes})
 install(EXPORT proximaTargets NAMESPACE proxima:: DESTINATION ${PROX_INSTALL_CMAKEDIR}
   COMPONENT development)
 
@@ -28,7 +33,12 @@ set(PROX_PACKAGE_COMPONENTS "")
 if(PROX_WITH_GLTF)
   list(APPEND PROX_PACKAGE_COMPONENTS gltf)
 endif()
+# hid: HID devices through hidapi (proxima_hid.h).
+if(PROX_WITH_HIDAPI)
+  list(APPEND PROX_PACKAGE_COMPONENTS hid)
+endif()
 set(PROX_KNOWN_COMPONENTS gltf)
+list(APPEND PROX_KNOWN_COMPONENTS hid)
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/proximaConfig.cmake.in
   ${CMAKE_CURRENT_BINARY_DIR}/proximaConfig.cmake INSTALL_DESTINATION ${PROX_INSTALL_CMAKEDIR})
 # 0.x releases promise nothing across minor versions, but SameMajorVersion is
@@ -47,6 +57,9 @@ file(RELATIVE_PATH prox_pc_to_prefix "/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/")
 string(REGEX REPLACE "/$" "" prox_pc_to_prefix "${prox_pc_to_prefix}")
 set(PROX_PC_REQUIRES_PRIVATE "" CACHE INTERNAL "pkg-config modules libproxima.so links")
 set(PROX_PC_LIBS_PRIVATE "-lstdc++ -lm -pthread")
+if(PROX_WITH_HIDAPI)
+  string(STRIP "${PROX_PC_REQUIRES_PRIVATE} hidapi-hidraw" PROX_PC_REQUIRES_PRIVATE)
+endif()
 configure_file(${CMAKE_CURRENT_LIST_DIR}/proxima.pc.in ${CMAKE_CURRENT_BINARY_DIR}/proxima.pc @ONLY)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/proxima.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
   COMPONENT development)
