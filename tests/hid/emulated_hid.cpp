@@ -333,9 +333,9 @@ void EmulatedHidBus::Impl::attach(Device& d) {
   }
 }
 
-EmulatedHidBus::EmulatedHidBus() : impl_(std::make_unique<Impl>()) {
+EmulatedHidBus::EmulatedHidBus(bool in_process) : impl_(std::make_unique<Impl>()) {
   impl_->testbed = umockdev_testbed_new();
-  if (!umockdev_in_mock_environment())
+  if (in_process && !umockdev_in_mock_environment())
     ADD_FAILURE() << "not under umockdev's preload: run the test through umockdev-wrapper";
 }
 

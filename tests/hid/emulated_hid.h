@@ -37,7 +37,9 @@ EmulatedHidSpec shared_device(const std::string& devices_dir, const std::string&
 
 class EmulatedHidBus {
  public:
-  EmulatedHidBus();
+  // `in_process`: hidapi runs in this process, which must then be under the
+  // preload (a test fails otherwise); false for a bus only children use.
+  explicit EmulatedHidBus(bool in_process = true);
   ~EmulatedHidBus();
   EmulatedHidBus(const EmulatedHidBus&) = delete;
   EmulatedHidBus& operator=(const EmulatedHidBus&) = delete;
