@@ -31,6 +31,11 @@ CSHARP_PACKAGES=(mono-mcs mono-devel mono-runtime nunit-console libnunit-cil-dev
 # Installing and packaging the SDK (the tests labelled install, docs/install.md).
 INSTALL_PACKAGES=(pkg-config dpkg-dev file)
 
+# HID devices (PROX_WITH_HIDAPI, sdk/src/devices, docs/devices.md#hid-devices):
+# hidapi's hidraw backend; its tests emulate hidraw nodes with umockdev's C
+# API and run under umockdev-wrapper.
+HID_PACKAGES=(libhidapi-dev pkg-config libumockdev-dev umockdev)
+
 # The fuzz targets (tests/fuzz): clang with libFuzzer and the sanitizer runtimes.
 FUZZ_PACKAGES=(clang libclang-rt-14-dev libfuzzer-14-dev)
 

@@ -13,6 +13,9 @@ need_packages "${VIEWER_PACKAGES[@]}"
 # The C# bindings: the release ctest runs their NUnit suite (label csharp).
 need_packages "${CSHARP_PACKAGES[@]}"
 
+# HID devices (PROX_WITH_HIDAPI) and their emulation for the tests (tests/hid).
+need_packages "${HID_PACKAGES[@]}"
+
 # The install tests (in the release suite): consume.sh installs the .deb
 # packages for real only on CI's throwaway machines (docs/install.md).
 need_packages "${INSTALL_PACKAGES[@]}"
@@ -27,7 +30,8 @@ configure() {  # configure DIR [cmake args...]
 
 echo "== core only (nothing optional: no tests, samples, benchmarks or glTF)"
 configure build/core -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_SAMPLES=OFF -DPROX_BUILD_BENCHMARKS=OFF \
-  -DPROX_WITH_GLTF=OFF -DPROX_BUILD_CSHARP=OFF
+  -DPROX_WITH_GLTF=OFF -DPROX_BUILD_CSHARP=OFF \
+  -DPROX_WITH_HIDAPI=OFF
 cmake --build build/core -j "$jobs"
 
 echo "== address + undefined-behaviour sanitizers"
@@ -38,7 +42,8 @@ ctest --test-dir build/asan --output-on-failure -j "$jobs"
 echo "== thread sanitizer (the tests labelled 'threads': handoffs, runtime threads, C API threads and devices)"
 configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=thread -DPROX_BUILD_SAMPLES=OFF
 cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests \
-  proxima_capi_stream_tests proxima_capi_timing_tests
+  proxima_capi_stream_tests proxima_capi_timing_tests \
+  proxima_hid_capi_tests
 ctest --test-dir build/tsan --output-on-failure -L threads
 
 echo "== fuzzers (libFuzzer, ASan + UBSan): each target 20 s on corpora from the shared assets (docs/robustness.md)"
