@@ -95,7 +95,12 @@ int main(int argc, char** argv) {
     if (std::strncmp(*e, "LD_PRELOAD=", 11) != 0 && std::strncmp(*e, "UMOCKDEV_DIR=", 13) != 0 &&
         std::strncmp(*e, "ASAN_OPTIONS=", 13) != 0)
       env.push_back(*e);
-  for (const std::string& e : bus.child_environment()) env.push_back(e);
+  // Preloads already asked for (a sanitizer's runtime) stay first.
+  const char* preload = std::getenv("LD_PRELOAD");
+  for (const std::string& e : bus.child_environment())
+    env.push_back(e.rfind("LD_PRELOAD=", 0) == 0 && preload && *preload
+                      ? "LD_PRELOAD=" + std::string(preload) + " " + e.substr(11)
+                      : e);
   const char* asan = std::getenv("ASAN_OPTIONS");
   env.push_back(std::string("ASAN_OPTIONS=verify_asan_link_order=0") + (asan ? std::string(":") + asan : ""));
   std::vector<char*> envp;
