@@ -120,7 +120,8 @@ class HidCliTest(unittest.TestCase):
                 self.assertEqual(last[1:3], [0, 0])
                 self.assertGreater(report["device"]["max_force"], 0.0, "the contact was felt")
                 writes = record[0]["writes"]
-                self.assertEqual(hid["outputs_written"], len(writes))
+                # The stats are read before the device is closed: it may write once more.
+                self.assertIn(len(writes) - hid["outputs_written"], (0, 1))
                 self.assertGreaterEqual(len(writes), 1)
                 if name == "dualsense":
                     self.assertGreater(max(int(w[6:8], 16) for w in writes), 0, "rumble")
