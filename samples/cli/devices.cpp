@@ -142,7 +142,7 @@ std::shared_ptr<HidRun> open_hid(const std::string& kind, proxWorldId world, con
   check(proxHidDevice_GetDeviceDef(run->id, def));
   return run;
 #else
-  (void)world, (void)start, (void)reference, (void)def;
+  (void)world, (void)start, (void)reference, (void)def, (void)vid, (void)pid;
   fail("--device hid: this libproxima was built without HID devices (PROX_WITH_HIDAPI)");
 #endif
 }
