@@ -94,6 +94,7 @@ struct EmulatedHidBus::Device {
   bool in_flight = false;  // a report sits in the PTY, not read yet
   bool plugged = false;
   std::vector<Bytes> writes, features_sent;
+  std::vector<double> write_times;
   std::vector<std::uint8_t> feature_requests;
   double write_delay = 0.0;
 };
@@ -298,6 +299,8 @@ gboolean EmulatedHidBus::Impl::on_write(UMockdevIoctlBase*, UMockdevIoctlClient*
     return TRUE;
   }
   d.writes.emplace_back(arg->data, arg->data + arg->data_len);
+  d.write_times.push_back(
+      std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
   const long n = arg->data_len;
   if (d.write_delay > 0.0) {
     // Answered later, from another thread (complete() is thread-safe): the
@@ -394,6 +397,11 @@ bool EmulatedHidBus::drain(int device, double seconds) {
 std::vector<Bytes> EmulatedHidBus::writes(int device) {
   std::lock_guard<std::mutex> lock(impl_->mutex);
   return impl_->devices.at(std::size_t(device))->writes;
+}
+
+std::vector<double> EmulatedHidBus::write_times(int device) {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->devices.at(std::size_t(device))->write_times;
 }
 
 std::vector<std::uint8_t> EmulatedHidBus::feature_requests(int device) {

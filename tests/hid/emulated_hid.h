@@ -58,6 +58,8 @@ class EmulatedHidBus {
 
   // Everything written to the device so far (output reports, byte 0 = id).
   std::vector<Bytes> writes(int device);
+  // When each write arrived (s, on the steady clock), in order.
+  std::vector<double> write_times(int device);
   // The ids of the feature reports asked for, in order.
   std::vector<std::uint8_t> feature_requests(int device);
   // Set-feature reports received.

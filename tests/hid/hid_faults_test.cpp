@@ -102,9 +102,11 @@ struct Recorder {
 class HidThreads : public HidScene {
  protected:
   // Opens the first device with these ids and lets it hold the tool.
-  proxHidDeviceId attach(std::uint16_t vid, std::uint16_t pid, double speed = 0.02) {
+  proxHidDeviceId attach(std::uint16_t vid, std::uint16_t pid, double speed = 0.02,
+                         double output_rate = 250.0) {
     proxHidDeviceDef def = def_for(vid, pid);
     def.linearSpeed = speed;
+    def.outputRate = output_rate;
     proxHidDeviceId d{};
     EXPECT_OK(proxWorld_OpenHidDevice(world, &def, &d));
     EXPECT_OK(proxHidDevice_GetDeviceDef(d, &recorder.inner));
@@ -152,7 +154,8 @@ class HidThreads : public HidScene {
 // force, back to rest after.
 TEST_F(HidThreads, OutputsFollowTheForceIntoContactAndBackOut) {
   const int dev = bus.add(device_spec("dualsense"));
-  device = attach(0x054c, 0x0ce6);
+  // 25 outputs a second at most: slower than the force changes, so the limit binds.
+  device = attach(0x054c, 0x0ce6, 0.02, 25.0);
   start();
   sleep_seconds(0.3);
   EXPECT_TRUE(bus.writes(dev).empty()) << "outputs while far from everything";
@@ -195,8 +198,42 @@ TEST_F(HidThreads, OutputsFollowTheForceIntoContactAndBackOut) {
   const proxHidDeviceStats s = stats_of(device);
   EXPECT_EQ(s.outputsWritten, all.size());
   EXPECT_EQ(s.failedWrites, 0u);
+  // At most 25 a second: consecutive writes at least 40 ms apart (less 4 ms
+  // of arrival jitter).
+  const std::vector<double> t = bus.write_times(dev);
+  ASSERT_GT(t.size(), 3u);
+  for (std::size_t i = 1; i < t.size(); ++i) EXPECT_GE(t[i] - t[i - 1], 0.036) << i;
   ASSERT_OK(proxWorld_StopThreads(world));
   expect_haptic_thread_clean();
+}
+
+// A device that takes half a second to answer each write holds up only its
+// own thread: the haptic loop keeps its rate, game-thread calls return at
+// once, and closing waits for the one write under way at most.
+TEST_F(HidThreads, ADeviceThatStopsAnsweringWritesBlocksNothingElse) {
+  const int dev = bus.add(device_spec("dualsense"));
+  device = attach(0x054c, 0x0ce6);
+  start();
+  bus.set_write_delay(dev, 0.5);
+  drive_to(dev, device, dualsense_report(0, 128, 128, 128), dualsense_report(128, 128, 128, 128),
+           kFar - 0.0235, true);
+  ASSERT_TRUE(wait_until([&] { return !bus.writes(dev).empty(); }));  // one write is hanging now
+  const long before = recorder.poses.load();
+  const double t0 = proxGetTime();
+  sleep_seconds(0.3);
+  const double ticked = double(recorder.poses.load() - before) / (proxGetTime() - t0);
+  EXPECT_GT(ticked, 300.0) << "haptic ticks a second while a write hangs";
+  const double s0 = proxGetTime();
+  stats_of(device);
+  EXPECT_LT(proxGetTime() - s0, 0.05);
+  const double c0 = proxGetTime();
+  ASSERT_OK(proxHidDevice_Close(device));
+  EXPECT_LT(proxGetTime() - c0, 0.6);
+  ASSERT_OK(proxWorld_StopThreads(world));
+  EXPECT_EQ(g_marked_allocations.load(), 0) << "the haptic thread allocated";
+#if !defined(__SANITIZE_THREAD__)
+  EXPECT_EQ(g_marked_locks.load(), 0) << "the haptic thread locked a mutex";
+#endif
 }
 
 TEST_F(HidThreads, DualShock4RumbleAndLightBar) {
