@@ -343,11 +343,25 @@ EmulatedHidBus::EmulatedHidBus(bool in_process) : impl_(std::make_unique<Impl>()
 }
 
 EmulatedHidBus::~EmulatedHidBus() {
-  for (std::thread& t : impl_->late) t.join();
-  for (auto& d : impl_->devices) {
-    if (d->plugged) umockdev_testbed_detach_ioctl(impl_->testbed, d->node.c_str(), nullptr);
-    if (d->handler) g_object_unref(d->handler);
+  // No handler runs once detached; then the delayed completions end.
+  std::vector<std::string> nodes;
+  {
+    std::lock_guard<std::mutex> lock(impl_->mutex);
+    for (auto& d : impl_->devices)
+      if (d->plugged) nodes.push_back(d->node);
   }
+  for (const std::string& n : nodes) umockdev_testbed_detach_ioctl(impl_->testbed, n.c_str(), nullptr);
+  for (;;) {
+    std::vector<std::thread> late;
+    {
+      std::lock_guard<std::mutex> lock(impl_->mutex);
+      late.swap(impl_->late);
+    }
+    if (late.empty()) break;
+    for (std::thread& t : late) t.join();
+  }
+  for (auto& d : impl_->devices)
+    if (d->handler) g_object_unref(d->handler);
   g_object_unref(impl_->testbed);
 }
 
