@@ -84,6 +84,10 @@ set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_NAME "libproxima-dev")
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_SECTION libdevel)
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS "libproxima${PROJECT_VERSION_MAJOR} (= ${PROJECT_VERSION})")
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_SHLIBDEPS OFF)
+# proxima.pc's Requires.private names hidapi-hidraw: its .pc comes with libhidapi-dev.
+if(PROX_WITH_HIDAPI)
+  string(APPEND CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS ", libhidapi-dev")
+endif()
 set(CPACK_COMPONENT_RUNTIME_DESCRIPTION "Proxima: multi-contact proximity haptics (shared library)")
 set(CPACK_COMPONENT_DEVELOPMENT_DESCRIPTION
     "Proxima: multi-contact proximity haptics (C headers, CMake package, pkg-config file)")
