@@ -22,7 +22,8 @@ if(NOT PROX_WITH_HIDAPI)
   list(APPEND prox_header_excludes PATTERN "proxima_hid.h" EXCLUDE)
 endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/sdk/include/proxima DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-  COMPONENT development FILES_MATCHING PATTERN "*.h" ${prox_header_excludes})
+  COMPONENT development FILES_MATCHING PATTERN "*.h" ${prox_header_excludes}
+  PATTERN "proxima_openxr.h" EXCLUDE)  # only with the openxr component, below
 install(EXPORT proximaTargets NAMESPACE proxima:: DESTINATION ${PROX_INSTALL_CMAKEDIR}
   COMPONENT development)
 
@@ -39,6 +40,17 @@ if(PROX_WITH_HIDAPI)
 endif()
 set(PROX_KNOWN_COMPONENTS gltf)
 list(APPEND PROX_KNOWN_COMPONENTS hid)
+# openxr: the OpenXR device (proxima_openxr.h, docs/openxr.md). Its header
+# includes <openxr/openxr.h>, so the config finds OpenXR's headers when the
+# component is asked for, the .pc requires openxr.pc (libopenxr-dev; its
+# Cflags only: libproxima links no loader) and libproxima-dev depends on
+# libopenxr-dev.
+list(APPEND PROX_KNOWN_COMPONENTS openxr)
+if(PROX_WITH_OPENXR)
+  list(APPEND PROX_PACKAGE_COMPONENTS openxr)
+  install(FILES ${PROJECT_SOURCE_DIR}/sdk/include/proxima/proxima_openxr.h
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/proxima COMPONENT development)
+endif()
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/proximaConfig.cmake.in
   ${CMAKE_CURRENT_BINARY_DIR}/proximaConfig.cmake INSTALL_DESTINATION ${PROX_INSTALL_CMAKEDIR})
 # 0.x releases promise nothing across minor versions, but SameMajorVersion is
@@ -57,8 +69,11 @@ file(RELATIVE_PATH prox_pc_to_prefix "/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/")
 string(REGEX REPLACE "/$" "" prox_pc_to_prefix "${prox_pc_to_prefix}")
 set(PROX_PC_REQUIRES_PRIVATE "" CACHE INTERNAL "pkg-config modules libproxima.so links")
 set(PROX_PC_LIBS_PRIVATE "-lstdc++ -lm -pthread")
+if(PROX_WITH_OPENXR)
+  set(PROX_PC_REQUIRES_PRIVATE "${PROX_PC_REQUIRES_PRIVATE} openxr" CACHE INTERNAL "")
+endif()
 if(PROX_WITH_HIDAPI)
-  string(STRIP "${PROX_PC_REQUIRES_PRIVATE} hidapi-hidraw" PROX_PC_REQUIRES_PRIVATE)
+  set(PROX_PC_REQUIRES_PRIVATE "${PROX_PC_REQUIRES_PRIVATE} hidapi-hidraw" CACHE INTERNAL "")
 endif()
 configure_file(${CMAKE_CURRENT_LIST_DIR}/proxima.pc.in ${CMAKE_CURRENT_BINARY_DIR}/proxima.pc @ONLY)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/proxima.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
@@ -103,4 +118,7 @@ endif()
 set(prox_deb_stem "proxima_${PROJECT_VERSION}_${CPACK_DEBIAN_PACKAGE_ARCHITECTURE}")
 set(CPACK_DEBIAN_RUNTIME_FILE_NAME "${prox_deb_stem}-libproxima${PROJECT_VERSION_MAJOR}.deb")
 set(CPACK_DEBIAN_DEVELOPMENT_FILE_NAME "${prox_deb_stem}-libproxima-dev.deb")
+if(PROX_WITH_OPENXR)
+  string(APPEND CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS ", libopenxr-dev")
+endif()
 include(CPack)

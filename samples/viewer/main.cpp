@@ -10,8 +10,8 @@
 #endif
 #include "image_out.h"
 #include "input.h"
-#include "obj_mesh.h"
 #include "options.h"
+#include "render_mesh.h"
 #include "renderer.h"
 #include "scene.h"
 #include "targets.h"
@@ -96,8 +96,8 @@ class Viewer {
   // a gamepad is there.
   void build_scene() {
     scene_ = std::make_unique<Scene>(options_, path_a_, path_b_);
-    mesh_a_ = read_render_mesh(path_a_);
-    if (path_b_ != path_a_) mesh_b_ = read_render_mesh(path_b_);
+    mesh_a_ = scene_->render_mesh(false);
+    if (path_b_ != path_a_) mesh_b_ = scene_->render_mesh(true);
     if (!options_.out_dir.empty()) {
       std::error_code ec;
       std::filesystem::create_directories(options_.out_dir, ec);

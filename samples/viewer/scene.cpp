@@ -218,22 +218,29 @@ void Scene::update(FrameData& frame, bool polylines) const {
     frame.polylines.clear();
     frame.polylines_valid = true;
     frame.polylines_pose = pt;
+    // The polylines are computed on each call: ask once into last frame's
+    // buffers, and again only when they were too small.
+    std::vector<proxVec3>& p = frame.polyline_points;
+    std::vector<proxPolylineInfo>& l = frame.polyline_infos;
     int32_t points = 0, lines = 0;
-    r = proxBody_GetIntersections(tool_, nullptr, 0, &points, nullptr, 0, &lines);
-    if (r != PROX_ERROR_CAPACITY) check(r);
-    if (lines > 0) {
-      std::vector<proxVec3> p(static_cast<std::size_t>(points));
-      std::vector<proxPolylineInfo> l(static_cast<std::size_t>(lines));
-      check(proxBody_GetIntersections(tool_, p.data(), points, &points, l.data(), lines, &lines));
-      for (const proxPolylineInfo& info : l) {
-        Polyline line;
-        line.closed = info.closed != 0;
-        for (int32_t k = 0; k < info.pointCount; ++k) {
-          const proxVec3& v = p[static_cast<std::size_t>(info.firstPoint + k)];
-          line.points.emplace_back(v.x, v.y, v.z);
-        }
-        frame.polylines.push_back(std::move(line));
+    r = proxBody_GetIntersections(tool_, p.data(), static_cast<int32_t>(p.size()), &points, l.data(),
+                                  static_cast<int32_t>(l.size()), &lines);
+    if (r == PROX_ERROR_CAPACITY) {
+      p.resize(static_cast<std::size_t>(points) * 2);
+      l.resize(static_cast<std::size_t>(lines) * 2);
+      r = proxBody_GetIntersections(tool_, p.data(), static_cast<int32_t>(p.size()), &points, l.data(),
+                                    static_cast<int32_t>(l.size()), &lines);
+    }
+    check(r);
+    for (int32_t i = 0; i < lines; ++i) {
+      const proxPolylineInfo& info = l[static_cast<std::size_t>(i)];
+      Polyline line;
+      line.closed = info.closed != 0;
+      for (int32_t k = 0; k < info.pointCount; ++k) {
+        const proxVec3& v = p[static_cast<std::size_t>(info.firstPoint + k)];
+        line.points.emplace_back(v.x, v.y, v.z);
       }
+      frame.polylines.push_back(std::move(line));
     }
   }
 
@@ -275,6 +282,20 @@ std::vector<double> Scene::force_shares(const std::vector<proxContact>& contacts
   }
   for (double& x : w) x = sum > 0.0 ? x / sum : 0.0;
   return w;
+}
+
+RenderMesh Scene::render_mesh(bool tool) const {
+  const proxMeshId mesh = tool ? mesh_b_ : mesh_a_;
+  uint32_t vertices = 0, triangles = 0;
+  const proxResult r = proxMesh_GetTriangles(mesh, nullptr, 0, &vertices, nullptr, 0, &triangles);
+  if (r != PROX_ERROR_CAPACITY) check(r);
+  std::vector<double> positions(3 * std::size_t{vertices});
+  RenderMesh out;
+  out.indices.resize(3 * std::size_t{triangles});
+  check(proxMesh_GetTriangles(mesh, positions.data(), vertices, &vertices, out.indices.data(), triangles,
+                              &triangles));
+  out.positions.assign(positions.begin(), positions.end());
+  return out;
 }
 
 }  // namespace viewer
