@@ -130,7 +130,7 @@ class HidThreads : public HidScene {
     EXPECT_TRUE(bus.drain(dev, 5.0));
   }
   void expect_haptic_thread_clean() {
-    EXPECT_GT(recorder.poses.load() + recorder.no_pose.load(), 100);
+    EXPECT_GT(recorder.poses.load() + recorder.no_pose.load(), 20);  // it ran
     EXPECT_EQ(g_marked_allocations.load(), 0) << "the haptic thread allocated";
 #if !defined(__SANITIZE_THREAD__)
     EXPECT_EQ(g_marked_locks.load(), 0) << "the haptic thread locked a mutex";
@@ -325,9 +325,10 @@ TEST_F(HidThreads, MalformedReportsAreCountedAndAFloodIsReadWhole) {
 TEST_F(HidThreads, TwoDevicesAtOnce) {
   const int pad = bus.add(device_spec("ds4v2"));
   const int puck = bus.add(device_spec("spacenavigator"));
-  device = attach(0x054c, 0x09cc);
+  // Fast enough that a report read late under a loaded machine still moves each visibly.
+  device = attach(0x054c, 0x09cc, 0.1);
   proxHidDeviceDef def = def_for(0x046d, 0xc626);
-  def.linearSpeed = 0.05;
+  def.linearSpeed = 0.1;
   proxHidDeviceId other;
   ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &other));
   start();
