@@ -36,6 +36,11 @@ OPENXR_PACKAGES=(libopenxr-dev libopenxr-loader1 openxr-layer-corevalidation bin
 # Installing and packaging the SDK (the tests labelled install, docs/install.md).
 INSTALL_PACKAGES=(pkg-config dpkg-dev file)
 
+# HID devices (PROX_WITH_HIDAPI, sdk/src/devices, docs/devices.md#hid-devices):
+# hidapi's hidraw backend; its tests emulate hidraw nodes with umockdev's C
+# API and run under umockdev-wrapper.
+HID_PACKAGES=(libhidapi-dev pkg-config libumockdev-dev umockdev)
+
 # The fuzz targets (tests/fuzz): clang with libFuzzer and the sanitizer runtimes.
 FUZZ_PACKAGES=(clang libclang-rt-14-dev libfuzzer-14-dev)
 

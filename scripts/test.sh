@@ -15,6 +15,9 @@ need_packages "${CSHARP_PACKAGES[@]}"
 # The OpenXR device's tests (tests/openxr): Debian's loader and validation layer.
 need_packages "${OPENXR_PACKAGES[@]}"
 
+# HID devices (PROX_WITH_HIDAPI) and their emulation for the tests (tests/hid).
+need_packages "${HID_PACKAGES[@]}"
+
 # The install tests (in the release suite): consume.sh installs the .deb
 # packages for real only on CI's throwaway machines (docs/install.md).
 need_packages "${INSTALL_PACKAGES[@]}"
@@ -30,6 +33,7 @@ configure() {  # configure DIR [cmake args...]
 echo "== core only (nothing optional: no tests, samples, benchmarks or glTF)"
 configure build/core -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_SAMPLES=OFF -DPROX_BUILD_BENCHMARKS=OFF \
   -DPROX_WITH_GLTF=OFF -DPROX_BUILD_CSHARP=OFF \
+  -DPROX_WITH_HIDAPI=OFF \
   -DPROX_WITH_OPENXR=OFF
 cmake --build build/core -j "$jobs"
 
@@ -42,7 +46,7 @@ echo "== thread sanitizer (the tests labelled 'threads': handoffs, runtime threa
 configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=thread -DPROX_BUILD_SAMPLES=OFF
 cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests \
   proxima_capi_stream_tests proxima_capi_timing_tests \
-  proxima_openxr_tests
+  proxima_hid_capi_tests proxima_openxr_tests
 ctest --test-dir build/tsan --output-on-failure -L threads
 
 echo "== fuzzers (libFuzzer, ASan + UBSan): each target 20 s on corpora from the shared assets (docs/robustness.md)"

@@ -1,5 +1,7 @@
 #include "scene.h"
 
+#include "hid_input.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -128,6 +130,13 @@ void Scene::build(const Options& options, const std::string& path_a, const std::
     proxDeviceDef device_def;
     check(proxStreamDevice_GetDeviceDef(stream_, &device_def));
     check(proxBody_SetDevice(tool_, &device_def));
+  } else if (options.device_kind == DeviceKind::hid) {
+    // The built-in scene starts where path T does, 50 mm from A. The
+    // device's own thread moves the tool from there.
+    const proxPose start = options.mesh_a.empty() ? translation(x_at_gap(0.05)) : options.pose_b;
+    if (options.mesh_a.empty()) visited = {start, translation(x_at_gap(0.0005))};
+    check(proxBody_SetPose(tool_, &start));
+    hid_ = attach_hid(world_, tool_, start, body.referencePoint);
   }
 
   bounds_min_ = glm::dvec3(info_a.boundsMin.x, info_a.boundsMin.y, info_a.boundsMin.z);
@@ -243,6 +252,8 @@ void Scene::update(FrameData& frame, bool polylines) const {
 void Scene::push_tool_pose(const proxPose& pose) {
   check(proxStreamDevice_PushPose(stream_, &pose, proxGetTime()));
 }
+
+std::string Scene::hid_summary() const { return viewer::hid_summary(world_, hid_); }
 
 bool Scene::stream_stats(proxStreamDeviceStats* stats) const {
   if (stream_.index1 == 0) return false;

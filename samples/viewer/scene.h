@@ -61,6 +61,8 @@ class Scene {
   // What the streamed device saw; false when no streamed device drives the tool.
   bool stream_stats(proxStreamDeviceStats* stats) const;
   proxPose tool_pose() const;
+  // A line about the HID device driving the tool; empty when none does.
+  std::string hid_summary() const;
   // The triangles of mesh A, or of the tool's mesh, to draw (the world's own,
   // welded: any file the library reads).
   RenderMesh render_mesh(bool tool) const;
@@ -82,6 +84,7 @@ class Scene {
   proxMeshId mesh_a_{}, mesh_b_{};
   bool threads_ = false;
   proxStreamDeviceId stream_{};  // the mouse or gamepad device
+  uint32_t hid_ = 0;             // the HID device (hid_input.h), index + 1
   double cutoff_ = 0.0;
   proxForceSettings force_{};
   glm::dvec3 reference_local_{0.0};
