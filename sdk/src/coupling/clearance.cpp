@@ -12,9 +12,12 @@ bool closer_than(const PairQuery& q, double distance, NodeStack& stack) {
   const Snch& tb = *q.snch_b;
   if (ta.nodes().empty() || tb.nodes().empty() || !(distance > 0.0)) return false;
   const Pose b_to_a = q.pose_a.inverse() * q.pose_b;
-  // Spheres whose gap is at least `distance` hold no closer pair.
+  // Spheres whose gap is at least `distance` hold no closer pair (compared
+  // squared: no square root per node pair).
   auto near = [&](const SnchNode& a, const SnchNode& b) {
-    return glm::length(b_to_a.apply(b.center) - a.center) - a.radius - b.radius < distance;
+    const Vec3 d = b_to_a.apply(b.center) - a.center;
+    const double reach = a.radius + b.radius + distance;
+    return glm::dot(d, d) < reach * reach;
   };
   stack.clear();
   if (near(ta.root(), tb.root())) stack.emplace_back(0u, 0u);
