@@ -182,11 +182,16 @@ TEST(ConstrainedTool, SlidesAlongASurfaceWithoutStickingOrJitter) {
   Scene scene = make_scene("bunny", error);
   ASSERT_EQ(error, "");
   scene.obstacle = square(60, 0.3, 0.0);
-  double bottom = INFINITY;
+  // The bunny's lowest point (z) over the square's middle.
+  double bottom = INFINITY, lowest_x = 0.0, lowest_y = 0.0;
   for (std::size_t i = 2; i < scene.tool.positions.size(); i += 3)
-    bottom = std::min(bottom, scene.tool.positions[i]);
-  const Vec3 above(0.0, 0.0, 0.01 - bottom), pressed(0.0, 0.0, -0.003 - bottom),
-      slid = pressed + Vec3(0.06, 0.0, 0.0);
+    if (scene.tool.positions[i] < bottom)
+      bottom = scene.tool.positions[i], lowest_x = scene.tool.positions[i - 2],
+      lowest_y = scene.tool.positions[i - 1];
+  const Vec3 centre(-lowest_x - 0.03, -lowest_y, 0.0);
+  const Vec3 above = centre + Vec3(0.0, 0.0, 0.01 - bottom),
+             pressed = centre + Vec3(0.0, 0.0, -0.003 - bottom);
+  const Vec3 slid = pressed + Vec3(0.06, 0.0, 0.0);
   std::vector<Pose> path = line_path({above, pressed}, 0.0001, 100);  // down, and settle
   const std::size_t slide_start = path.size();
   const std::vector<Pose> slide = line_path({pressed, slid}, 0.0001, 0);
