@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace prox::coupling {
@@ -21,6 +22,15 @@ constexpr double kNegligibleStep = 1e-3;
 // The share of the predicted distance after a step that the exact check
 // asks for (the rest absorbs the linearisation's error).
 constexpr double kExpectedFraction = 0.9;
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void update(const CouplingSettings& coupling, const ProxySettings& settings, const ProxyTool& tool,
+            const Obstacle* obstacles, std::size_t count, const Pose& device, const Pose* anchor,
+            ProxyState& state, ProxyStats& stats);
 
 }  // namespace
 
@@ -48,6 +58,15 @@ bool clear_of(const ProxyTool& tool, const Pose& pose, const Obstacle* obstacles
 void update_proxy(const CouplingSettings& coupling, const ProxySettings& settings, const ProxyTool& tool,
                   const Obstacle* obstacles, std::size_t count, const Pose& device, const Pose* anchor,
                   ProxyState& state, ProxyStats& stats) {
+  const auto start = Clock::now();
+  update(coupling, settings, tool, obstacles, count, device, anchor, state, stats);
+  stats.seconds = seconds_since(start);
+}
+
+namespace {
+void update(const CouplingSettings& coupling, const ProxySettings& settings, const ProxyTool& tool,
+            const Obstacle* obstacles, std::size_t count, const Pose& device, const Pose* anchor,
+            ProxyState& state, ProxyStats& stats) {
   stats = ProxyStats{};
   const double ds = settings.safety_distance;
   // Conservative advancement: whatever the constraints miss was farther than
@@ -60,7 +79,9 @@ void update_proxy(const CouplingSettings& coupling, const ProxySettings& setting
   }
   const Twist desired = twist_between(state.pose, device, tool.reference_local);
   const double target = ds * (1.0 + kTargetMargin);
+  const auto solve_start = Clock::now();
   const Twist u = solve_step(coupling, desired, state.constraints, target, max_step, state.lambda);
+  stats.solve_seconds = seconds_since(solve_start);
   for (const ProxyConstraint& c : state.constraints) stats.constraints += c.distance - target <= max_step;
   bool free = true;  // no constraint changed the desired step
   for (std::size_t i = 0; i < state.constraints.size(); ++i) free &= state.lambda[i] == 0.0;
@@ -121,5 +142,7 @@ void update_proxy(const CouplingSettings& coupling, const ProxySettings& setting
     ++stats.halvings;
   }
 }
+
+}  // namespace
 
 }  // namespace prox::coupling

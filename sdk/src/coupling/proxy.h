@@ -48,7 +48,9 @@ struct ProxyStats {
   int halvings = 0;     // steps halved before one was safe
   int distance_checks = 0;
   bool moved = false;
-  bool at_device = false;  // the proxy is the device pose (nothing in the way)
+  bool at_device = false;      // the proxy is the device pose (nothing in the way)
+  double solve_seconds = 0.0;  // the constrained solve
+  double seconds = 0.0;        // the whole update, checks included
 };
 
 // The proxy's exact distance to the obstacles, capped at `cap` (the
