@@ -16,8 +16,14 @@ install(TARGETS proxima_capi proxima_headers EXPORT proximaTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# Headers of optional parts this build lacks are left out.
+set(prox_header_excludes "")
+if(NOT PROX_WITH_HIDAPI)
+  list(APPEND prox_header_excludes PATTERN "proxima_hid.h" EXCLUDE)
+endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/sdk/include/proxima DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-  COMPONENT development FILES_MATCHING PATTERN "*.h")
+  COMPONENT development FILES_MATCHING PATTERN "*.h" ${prox_header_excludes}
+  PATTERN "proxima_openxr.h" EXCLUDE)  # only with the openxr component, below
 install(EXPORT proximaTargets NAMESPACE proxima:: DESTINATION ${PROX_INSTALL_CMAKEDIR}
   COMPONENT development)
 
@@ -28,7 +34,23 @@ set(PROX_PACKAGE_COMPONENTS "")
 if(PROX_WITH_GLTF)
   list(APPEND PROX_PACKAGE_COMPONENTS gltf)
 endif()
+# hid: HID devices through hidapi (proxima_hid.h).
+if(PROX_WITH_HIDAPI)
+  list(APPEND PROX_PACKAGE_COMPONENTS hid)
+endif()
 set(PROX_KNOWN_COMPONENTS gltf)
+list(APPEND PROX_KNOWN_COMPONENTS hid)
+# openxr: the OpenXR device (proxima_openxr.h, docs/openxr.md). Its header
+# includes <openxr/openxr.h>, so the config finds OpenXR's headers when the
+# component is asked for, the .pc requires openxr.pc (libopenxr-dev; its
+# Cflags only: libproxima links no loader) and libproxima-dev depends on
+# libopenxr-dev.
+list(APPEND PROX_KNOWN_COMPONENTS openxr)
+if(PROX_WITH_OPENXR)
+  list(APPEND PROX_PACKAGE_COMPONENTS openxr)
+  install(FILES ${PROJECT_SOURCE_DIR}/sdk/include/proxima/proxima_openxr.h
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/proxima COMPONENT development)
+endif()
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/proximaConfig.cmake.in
   ${CMAKE_CURRENT_BINARY_DIR}/proximaConfig.cmake INSTALL_DESTINATION ${PROX_INSTALL_CMAKEDIR})
 # 0.x releases promise nothing across minor versions, but SameMajorVersion is
@@ -47,6 +69,12 @@ file(RELATIVE_PATH prox_pc_to_prefix "/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/")
 string(REGEX REPLACE "/$" "" prox_pc_to_prefix "${prox_pc_to_prefix}")
 set(PROX_PC_REQUIRES_PRIVATE "" CACHE INTERNAL "pkg-config modules libproxima.so links")
 set(PROX_PC_LIBS_PRIVATE "-lstdc++ -lm -pthread")
+if(PROX_WITH_OPENXR)
+  set(PROX_PC_REQUIRES_PRIVATE "${PROX_PC_REQUIRES_PRIVATE} openxr" CACHE INTERNAL "")
+endif()
+if(PROX_WITH_HIDAPI)
+  set(PROX_PC_REQUIRES_PRIVATE "${PROX_PC_REQUIRES_PRIVATE} hidapi-hidraw" CACHE INTERNAL "")
+endif()
 configure_file(${CMAKE_CURRENT_LIST_DIR}/proxima.pc.in ${CMAKE_CURRENT_BINARY_DIR}/proxima.pc @ONLY)
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/proxima.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
   COMPONENT development)
@@ -71,6 +99,10 @@ set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_NAME "libproxima-dev")
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_SECTION libdevel)
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS "libproxima${PROJECT_VERSION_MAJOR} (= ${PROJECT_VERSION})")
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_SHLIBDEPS OFF)
+# proxima.pc's Requires.private names hidapi-hidraw: its .pc comes with libhidapi-dev.
+if(PROX_WITH_HIDAPI)
+  string(APPEND CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS ", libhidapi-dev")
+endif()
 set(CPACK_COMPONENT_RUNTIME_DESCRIPTION "Proxima: multi-contact proximity haptics (shared library)")
 set(CPACK_COMPONENT_DEVELOPMENT_DESCRIPTION
     "Proxima: multi-contact proximity haptics (C headers, CMake package, pkg-config file)")
@@ -86,4 +118,7 @@ endif()
 set(prox_deb_stem "proxima_${PROJECT_VERSION}_${CPACK_DEBIAN_PACKAGE_ARCHITECTURE}")
 set(CPACK_DEBIAN_RUNTIME_FILE_NAME "${prox_deb_stem}-libproxima${PROJECT_VERSION_MAJOR}.deb")
 set(CPACK_DEBIAN_DEVELOPMENT_FILE_NAME "${prox_deb_stem}-libproxima-dev.deb")
+if(PROX_WITH_OPENXR)
+  string(APPEND CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS ", libopenxr-dev")
+endif()
 include(CPack)

@@ -26,11 +26,19 @@ build/coal-venv/bin/python -c "import coal" 2>/dev/null ||
   build/coal-venv/bin/pip install --quiet "coal==$COAL_VERSION"
 coal_prefix=$(ls -d build/coal-venv/lib/python3*/site-packages/cmeel.prefix)
 
+# Coal's prefix goes to its peer's own build only (PROX_COAL_PREFIX, see
+# bench/CMakeLists.txt): on CMAKE_PREFIX_PATH it would hand FCL the wheel's
+# octomap. An earlier configure may have left that in the cache.
+stale=()
+grep -qs "^octomap_DIR.*cmeel" build/release/CMakeCache.txt &&
+  stale=(-UCMAKE_PREFIX_PATH -Doctomap_DIR=octomap_DIR-NOTFOUND)
 cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DPROX_WARNINGS_AS_ERRORS=ON \
   -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" \
   -DPROX_BUILD_BENCHMARKS=ON -DPROX_BENCH_WITH_FCL=ON -DPROX_BENCH_WITH_COAL=ON \
-  -DCMAKE_PREFIX_PATH="$PWD/$coal_prefix" >/dev/null
+  -DPROX_COAL_PREFIX="$PWD/$coal_prefix" "${stale[@]}" >/dev/null
 cmake --build build/release --target proxima_bench proxima_timing_bench -j "$jobs"
+# The bench and Coal's peer each load one build of every library.
+bench/check_peers.sh build/release/bench/proxima_bench build/release/bench/proxima_coal_peer
 
 build/bench-venv/bin/python bench/decimate.py "$(assets_dir)/bunny.obj" build/bench-meshes
 

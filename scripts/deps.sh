@@ -28,8 +28,18 @@ VIEWER_PACKAGES=(libvulkan-dev mesa-vulkan-drivers glslang-tools libglfw3-dev li
 # runtime, and NUnit 2.6 for their suite.
 CSHARP_PACKAGES=(mono-mcs mono-devel mono-runtime nunit-console libnunit-cil-dev)
 
+# The OpenXR device (PROX_WITH_OPENXR, docs/openxr.md): the headers to build
+# it; the loader, the core validation layer and readelf (binutils) for its
+# tests and the sample.
+OPENXR_PACKAGES=(libopenxr-dev libopenxr-loader1 openxr-layer-corevalidation binutils)
+
 # Installing and packaging the SDK (the tests labelled install, docs/install.md).
 INSTALL_PACKAGES=(pkg-config dpkg-dev file)
+
+# HID devices (PROX_WITH_HIDAPI, sdk/src/devices, docs/devices.md#hid-devices):
+# hidapi's hidraw backend; its tests emulate hidraw nodes with umockdev's C
+# API and run under umockdev-wrapper.
+HID_PACKAGES=(libhidapi-dev pkg-config libumockdev-dev umockdev)
 
 # The fuzz targets (tests/fuzz): clang with libFuzzer and the sanitizer runtimes.
 FUZZ_PACKAGES=(clang libclang-rt-14-dev libfuzzer-14-dev)

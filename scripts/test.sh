@@ -12,6 +12,11 @@ need_packages "${CORE_PACKAGES[@]}" libbenchmark-dev python3 python3-venv
 need_packages "${VIEWER_PACKAGES[@]}"
 # The C# bindings: the release ctest runs their NUnit suite (label csharp).
 need_packages "${CSHARP_PACKAGES[@]}"
+# The OpenXR device's tests (tests/openxr): Debian's loader and validation layer.
+need_packages "${OPENXR_PACKAGES[@]}"
+
+# HID devices (PROX_WITH_HIDAPI) and their emulation for the tests (tests/hid).
+need_packages "${HID_PACKAGES[@]}"
 
 # The install tests (in the release suite): consume.sh installs the .deb
 # packages for real only on CI's throwaway machines (docs/install.md).
@@ -27,7 +32,9 @@ configure() {  # configure DIR [cmake args...]
 
 echo "== core only (nothing optional: no tests, samples, benchmarks or glTF)"
 configure build/core -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_SAMPLES=OFF -DPROX_BUILD_BENCHMARKS=OFF \
-  -DPROX_WITH_GLTF=OFF -DPROX_BUILD_CSHARP=OFF
+  -DPROX_WITH_GLTF=OFF -DPROX_BUILD_CSHARP=OFF \
+  -DPROX_WITH_HIDAPI=OFF \
+  -DPROX_WITH_OPENXR=OFF
 cmake --build build/core -j "$jobs"
 
 echo "== address + undefined-behaviour sanitizers"
@@ -38,7 +45,8 @@ ctest --test-dir build/asan --output-on-failure -j "$jobs"
 echo "== thread sanitizer (the tests labelled 'threads': handoffs, runtime threads, C API threads and devices)"
 configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=thread -DPROX_BUILD_SAMPLES=OFF
 cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests \
-  proxima_capi_stream_tests proxima_capi_timing_tests proxima_coupling_threads_tests
+  proxima_capi_stream_tests proxima_capi_timing_tests \
+  proxima_hid_capi_tests proxima_openxr_tests proxima_coupling_threads_tests
 ctest --test-dir build/tsan --output-on-failure -L threads
 
 echo "== fuzzers (libFuzzer, ASan + UBSan): each target 20 s on corpora from the shared assets (docs/robustness.md)"
@@ -52,6 +60,10 @@ cmake --build build/fuzz -j "$jobs" --target proxima_fuzz_obj proxima_fuzz_poses
 tests/fuzz/run.sh build/fuzz "$(assets_dir)" "${PROX_FUZZ_SECONDS:-20}"
 
 echo "== release"
+# FCL, the scene benchmark's peer (never a dependency of the SDK): the smoke
+# run below measures against it, and the test Bench.PeersApart checks that no
+# benchmark executable loads two builds of one library (docs/benchmarks.md).
+need_packages libfcl-dev
 configure build/release -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_BENCHMARKS=ON
 cmake --build build/release -j "$jobs"
 echo "-- micro-benchmark smoke run"
@@ -65,7 +77,7 @@ if bench_venv --no-plots >/dev/null &&
 else
   echo "   fast-simplification could not be installed: scaling-2k and scaling-7k are skipped"
 fi
-build/release/bench/proxima_bench --scene all --poses 5 --meshes build/bench-meshes --out build/bench-smoke >/dev/null
+build/release/bench/proxima_bench --scene all --poses 5 --builds 1 --meshes build/bench-meshes --out build/bench-smoke >/dev/null
 build/release/bench/proxima_timing_bench --seconds 0.1 --out build/bench-smoke >/dev/null
 ctest --test-dir build/release --output-on-failure -j "$jobs"
 

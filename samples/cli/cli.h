@@ -338,5 +338,18 @@ int lmd(Args& args);
 int polylines(Args& args);
 int path(Args& args);
 int run(Args& args);
+int devices(Args& args);
+
+// HID devices for `run --device hid[:VVVV:PPPP]` (devices.cpp; only when
+// libproxima was built with them, else opening fails with a message).
+struct HidRun;
+bool is_hid_kind(const std::string& kind);
+// Opens the device the kind names and fills *def to attach it; the tool
+// starts at `start` and turns about `reference` (in its frame).
+std::shared_ptr<HidRun> open_hid(const std::string& kind, proxWorldId world, const proxPose& start,
+                                 const proxVec3& reference, proxDeviceDef* def);
+std::string hid_description(const HidRun& hid);
+void print_hid_stats(const HidRun& hid);
+void hid_json(const HidRun& hid, Json& j);
 
 }  // namespace proxcli

@@ -11,7 +11,8 @@
 // are in the meshes' units (metres for the shared assets). docs/cli.md has
 // the details and the JSON layout.
 //
-//   proxima run [A B] [--device scripted|stream] [--poses FILE] [--seconds S] ...
+//   proxima run [A B] [--device scripted|stream|hid[:VVVV:PPPP]] [--poses FILE] [--seconds S] ...
+//   proxima devices [--json FILE]
 //
 // A customer of the SDK like any other: it sees only the C API
 // (<proxima/proxima.h>, libproxima.so) and the samples' own utilities.
@@ -27,10 +28,11 @@ const char* kUsage =
     "  proxima polylines A B [--pose-a tx ty tz qw qx qy qz] [--pose-b ...] [--json FILE]\n"
     "  proxima path [A B] [--poses FILE | --steps N] [--method precise|original|both] [--force hard|soft]\n"
     "               [--csv FILE]\n"
-    "  proxima run [A B] [--device scripted|stream] [--poses FILE] [--seconds S] [--hold S]\n"
+    "  proxima run [A B] [--device scripted|stream|hid[:VVVV:PPPP]] [--poses FILE] [--seconds S] [--hold S]\n"
     "              [--method precise|original] [--force hard|soft] [--json FILE]\n"
     "              [--stream-rate HZ] [--stream-mode hold|interpolate|extrapolate]\n"
     "              [--haptic-timing auto|spin|sleep] [--spin-margin S] [--realtime] [--lock-memory]\n"
+    "  proxima devices [--json FILE]\n"
     "  proxima --version\n";
 
 }  // namespace
@@ -49,6 +51,7 @@ int main(int argc, char** argv) {
     if (command == "polylines") return polylines(args);
     if (command == "path") return path(args);
     if (command == "run") return run(args);
+    if (command == "devices") return devices(args);
     if (command == "--version") {
       std::printf("proxima %s\n", PROX_VERSION_STRING);
       return 0;

@@ -188,8 +188,8 @@ int run(Args& args) {
       json_path = args.next("--json file");
     } else if (opt == "--device") {
       device_kind = args.next("--device value");
-      if (device_kind != "scripted" && device_kind != "stream")
-        fail("--device: '" + device_kind + "' is not scripted or stream");
+      if (device_kind != "scripted" && device_kind != "stream" && !is_hid_kind(device_kind))
+        fail("--device: '" + device_kind + "' is not scripted, stream or hid[:VVVV:PPPP]");
     } else if (opt == "--stream-rate") {
       stream_rate = parse_number(args.next("--stream-rate value"), "--stream-rate");
       if (!(stream_rate >= 1.0 && stream_rate <= 10000.0)) fail("--stream-rate must be in [1, 10000] Hz");
@@ -226,6 +226,7 @@ int run(Args& args) {
     }
   }
   const bool streamed = device_kind == "stream";
+  const bool hid = is_hid_kind(device_kind);  // the tool follows the device from the path's start
   if (path_b.empty()) path_b = path_a;
   const bool constrained = tool_mode == PROX_TOOL_CONSTRAINED;
   auto scene_ptr = std::make_unique<Scene>(settings, path_a, path_b, identity(), identity());
@@ -258,7 +259,14 @@ int run(Args& args) {
   proxStreamDeviceId stream{};
   Recording recording;
   proxDeviceDef device_def;
-  if (streamed) {
+  std::shared_ptr<HidRun> hid_run;  // closed before the scene goes
+  if (hid) {
+    proxMeshInfo info;
+    check(proxMesh_GetInfo(scene.mesh_b(), &info));
+    hid_run = open_hid(device_kind, scene.world(), path.front(), centre(info), &recording.inner);
+    device_def = recording.def();
+    std::printf("device: HID %s, read on its own thread\n", hid_description(*hid_run).c_str());
+  } else if (streamed) {
     proxStreamDeviceDef def = proxDefaultStreamDeviceDef();
     def.mode = stream_mode;
     def.delay = 1.0 / stream_rate;  // one frame: a sample on either side
@@ -355,7 +363,9 @@ int run(Args& args) {
   check(proxWorld_GetSafetyStats(scene.world(), &safety));
   DeviceFigures device;
   proxStreamDeviceStats stream_stats{};
-  if (streamed) {
+  if (hid) {
+    device = recording.figures();
+  } else if (streamed) {
     device = recording.figures();
     check(proxStreamDevice_GetStats(stream, &stream_stats));
   } else {
@@ -368,6 +378,7 @@ int run(Args& args) {
       "ticks %.4f N; %s\n",
       static_cast<unsigned long long>(device.reads), static_cast<unsigned long long>(device.writes),
       device.max_force, device.max_force_step, device.all_finite ? "all finite" : "NOT ALL FINITE");
+  if (hid) print_hid_stats(*hid_run);
   if (streamed)
     std::printf(
         "stream: %llu samples pushed, %llu dropped, %llu refused; interval mean %.2f ms, max %.2f ms; "
@@ -453,6 +464,7 @@ int run(Args& args) {
       j.key("max_device_penetration").value(watch->max_device_penetration);
       j.key("proxy_samples").value(static_cast<long long>(watch->samples));
     }
+    if (hid) hid_json(*hid_run, j);
     j.key("safety").begin_object();
     j.key("invalid_poses").value(count(safety.invalidPoses));
     j.key("stale_ticks").value(count(safety.staleTicks));

@@ -10,8 +10,8 @@
 #endif
 #include "image_out.h"
 #include "input.h"
-#include "obj_mesh.h"
 #include "options.h"
+#include "render_mesh.h"
 #include "renderer.h"
 #include "scene.h"
 #include "targets.h"
@@ -96,8 +96,8 @@ class Viewer {
   // a gamepad is there.
   void build_scene() {
     scene_ = std::make_unique<Scene>(options_, path_a_, path_b_);
-    mesh_a_ = read_render_mesh(path_a_);
-    if (path_b_ != path_a_) mesh_b_ = read_render_mesh(path_b_);
+    mesh_a_ = scene_->render_mesh(false);
+    if (path_b_ != path_a_) mesh_b_ = scene_->render_mesh(true);
     if (!options_.out_dir.empty()) {
       std::error_code ec;
       std::filesystem::create_directories(options_.out_dir, ec);
@@ -168,6 +168,8 @@ class Viewer {
           device_name(options_.device_kind), static_cast<unsigned long long>(stream.samplesPushed),
           p.position.x, p.position.y, p.position.z, p.rotation.w, p.rotation.x, p.rotation.y, p.rotation.z);
     }
+    const std::string hid = scene_->hid_summary();
+    if (!hid.empty()) std::printf("proxima-viewer: %s\n", hid.c_str());
     const int messages = VulkanContext::validation_messages();
     if (messages > 0) {
       std::fprintf(stderr, "proxima-viewer: %d validation message%s (printed above)\n", messages,
@@ -258,7 +260,8 @@ int Viewer::run_window() {
   } terminate;
   if (!glfwVulkanSupported()) throw VulkanError("GLFW finds no Vulkan loader or driver for a window");
   int gamepad = find_gamepad();
-  if (options_.device == "auto" && gamepad >= 0) options_.device_kind = DeviceKind::gamepad;
+  if (options_.device == "auto" && gamepad >= 0 && options_.device_kind != DeviceKind::hid)
+    options_.device_kind = DeviceKind::gamepad;
   if (options_.device_kind == DeviceKind::gamepad && gamepad < 0)
     throw std::runtime_error("--device gamepad: no gamepad is connected (GLFW maps none)");
   if (options_.device_kind == DeviceKind::gamepad)

@@ -1,5 +1,7 @@
 #include "options.h"
 
+#include "hid_input.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -22,15 +24,17 @@ const char* const kUsage =
     "preset's)\n"
     "  --method precise|original       the improved method or the Johnson-Cohen baseline (default precise)\n"
     "  --force hard|soft               force settings (docs/cli.md; default hard)\n"
-    "  --device auto|scripted|mouse|gamepad  what drives the tool:\n"
+    "  --device auto|scripted|mouse|gamepad|hid  what drives the tool:\n"
     "                                    scripted: the scripted device along path T (approach, hold,\n"
     "                                    retreat, looped) or along --poses\n"
     "                                    mouse: right-drag moves the tool in the view plane\n"
     "                                    gamepad: the left stick moves it in the view plane, the\n"
     "                                    triggers along the view, the right stick turns it\n"
     "                                    (mouse and gamepad through the streamed device; window only)\n"
-    "                                    auto: in a window a gamepad if one is connected, else the\n"
-    "                                    mouse; headless scripted (no hidapi device in this version)\n"
+    "                                    hid: a SpaceMouse, DualShock 4 or DualSense through hidapi\n"
+    "                                    (docs/devices.md; also headless)\n"
+    "                                    auto: a HID device if one is plugged in, else in a window a\n"
+    "                                    gamepad if one is connected, else the mouse; headless scripted\n"
     "                                  default: scripted without meshes; with A and B the tool stays put\n"
     "  --poses FILE                    the scripted device's path: one pose per line, tx ty tz qw qx qy qz\n"
     "  --seconds S                     path T: the time of each leg; --poses: of the whole path (default 4)\n"
@@ -147,10 +151,11 @@ Options parse_options(int argc, char** argv, bool* help) {
       o.validation = true;
     } else if (a == "--device") {
       o.device = next("--device value");
-      if (o.device == "hid")
-        fail("--device hid: not in this version of the viewer (use scripted, mouse, gamepad or auto)");
-      if (o.device != "auto" && o.device != "scripted" && o.device != "mouse" && o.device != "gamepad")
-        fail("--device: '" + o.device + "' is not auto, scripted, mouse or gamepad");
+      if (o.device == "hid" && !hid_supported())
+        fail("--device hid: this libproxima was built without HID devices (PROX_WITH_HIDAPI)");
+      if (o.device != "auto" && o.device != "scripted" && o.device != "mouse" && o.device != "gamepad" &&
+          o.device != "hid")
+        fail("--device: '" + o.device + "' is not auto, scripted, mouse, gamepad or hid");
     } else if (a == "--poses") {
       o.poses_file = next("--poses file");
     } else if (a == "--seconds") {
@@ -187,9 +192,13 @@ Options parse_options(int argc, char** argv, bool* help) {
   if (!o.out_dir.empty() && !o.headless) fail("--out writes headless frames: add --headless");
   if (o.device.empty()) {
     o.device_kind = o.mesh_a.empty() || !o.poses_file.empty() ? DeviceKind::scripted : DeviceKind::none;
+  } else if (o.device == "auto" && hid_present()) {
+    o.device_kind = DeviceKind::hid;  // hid > gamepad > mouse > scripted
   } else if (o.device == "auto") {
     // In a window the viewer looks for a gamepad once GLFW is up (main.cpp).
     o.device_kind = o.headless ? DeviceKind::scripted : DeviceKind::mouse;
+  } else if (o.device == "hid") {
+    o.device_kind = DeviceKind::hid;
   } else if (o.device == "scripted") {
     o.device_kind = DeviceKind::scripted;
   } else {
@@ -211,6 +220,8 @@ const char* device_name(DeviceKind d) {
       return "mouse";
     case DeviceKind::gamepad:
       return "gamepad";
+    case DeviceKind::hid:
+      return "hid";
     default:
       return "none";
   }

@@ -14,7 +14,7 @@ struct Show {
 };
 
 // How the tool is driven. `auto` resolves to one of the others (see resolve()).
-enum class DeviceKind { none, scripted, mouse, gamepad };
+enum class DeviceKind { none, scripted, mouse, gamepad, hid };
 
 struct Options {
   std::string mesh_a, mesh_b;  // both empty: the built-in bunny scene (path T)

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "draw_list.h"
-#include "obj_mesh.h"
+#include "render_mesh.h"
 #include "vulkan_context.h"
 
 #include <glm/glm.hpp>

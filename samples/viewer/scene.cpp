@@ -1,5 +1,7 @@
 #include "scene.h"
 
+#include "hid_input.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -128,6 +130,13 @@ void Scene::build(const Options& options, const std::string& path_a, const std::
     proxDeviceDef device_def;
     check(proxStreamDevice_GetDeviceDef(stream_, &device_def));
     check(proxBody_SetDevice(tool_, &device_def));
+  } else if (options.device_kind == DeviceKind::hid) {
+    // The built-in scene starts where path T does, 50 mm from A. The
+    // device's own thread moves the tool from there.
+    const proxPose start = options.mesh_a.empty() ? translation(x_at_gap(0.05)) : options.pose_b;
+    if (options.mesh_a.empty()) visited = {start, translation(x_at_gap(0.0005))};
+    check(proxBody_SetPose(tool_, &start));
+    hid_ = attach_hid(world_, tool_, start, body.referencePoint);
   }
 
   bounds_min_ = glm::dvec3(info_a.boundsMin.x, info_a.boundsMin.y, info_a.boundsMin.z);
@@ -209,22 +218,29 @@ void Scene::update(FrameData& frame, bool polylines) const {
     frame.polylines.clear();
     frame.polylines_valid = true;
     frame.polylines_pose = pt;
+    // The polylines are computed on each call: ask once into last frame's
+    // buffers, and again only when they were too small.
+    std::vector<proxVec3>& p = frame.polyline_points;
+    std::vector<proxPolylineInfo>& l = frame.polyline_infos;
     int32_t points = 0, lines = 0;
-    r = proxBody_GetIntersections(tool_, nullptr, 0, &points, nullptr, 0, &lines);
-    if (r != PROX_ERROR_CAPACITY) check(r);
-    if (lines > 0) {
-      std::vector<proxVec3> p(static_cast<std::size_t>(points));
-      std::vector<proxPolylineInfo> l(static_cast<std::size_t>(lines));
-      check(proxBody_GetIntersections(tool_, p.data(), points, &points, l.data(), lines, &lines));
-      for (const proxPolylineInfo& info : l) {
-        Polyline line;
-        line.closed = info.closed != 0;
-        for (int32_t k = 0; k < info.pointCount; ++k) {
-          const proxVec3& v = p[static_cast<std::size_t>(info.firstPoint + k)];
-          line.points.emplace_back(v.x, v.y, v.z);
-        }
-        frame.polylines.push_back(std::move(line));
+    r = proxBody_GetIntersections(tool_, p.data(), static_cast<int32_t>(p.size()), &points, l.data(),
+                                  static_cast<int32_t>(l.size()), &lines);
+    if (r == PROX_ERROR_CAPACITY) {
+      p.resize(static_cast<std::size_t>(points) * 2);
+      l.resize(static_cast<std::size_t>(lines) * 2);
+      r = proxBody_GetIntersections(tool_, p.data(), static_cast<int32_t>(p.size()), &points, l.data(),
+                                    static_cast<int32_t>(l.size()), &lines);
+    }
+    check(r);
+    for (int32_t i = 0; i < lines; ++i) {
+      const proxPolylineInfo& info = l[static_cast<std::size_t>(i)];
+      Polyline line;
+      line.closed = info.closed != 0;
+      for (int32_t k = 0; k < info.pointCount; ++k) {
+        const proxVec3& v = p[static_cast<std::size_t>(info.firstPoint + k)];
+        line.points.emplace_back(v.x, v.y, v.z);
       }
+      frame.polylines.push_back(std::move(line));
     }
   }
 
@@ -236,6 +252,8 @@ void Scene::update(FrameData& frame, bool polylines) const {
 void Scene::push_tool_pose(const proxPose& pose) {
   check(proxStreamDevice_PushPose(stream_, &pose, proxGetTime()));
 }
+
+std::string Scene::hid_summary() const { return viewer::hid_summary(world_, hid_); }
 
 bool Scene::stream_stats(proxStreamDeviceStats* stats) const {
   if (stream_.index1 == 0) return false;
@@ -264,6 +282,20 @@ std::vector<double> Scene::force_shares(const std::vector<proxContact>& contacts
   }
   for (double& x : w) x = sum > 0.0 ? x / sum : 0.0;
   return w;
+}
+
+RenderMesh Scene::render_mesh(bool tool) const {
+  const proxMeshId mesh = tool ? mesh_b_ : mesh_a_;
+  uint32_t vertices = 0, triangles = 0;
+  const proxResult r = proxMesh_GetTriangles(mesh, nullptr, 0, &vertices, nullptr, 0, &triangles);
+  if (r != PROX_ERROR_CAPACITY) check(r);
+  std::vector<double> positions(3 * std::size_t{vertices});
+  RenderMesh out;
+  out.indices.resize(3 * std::size_t{triangles});
+  check(proxMesh_GetTriangles(mesh, positions.data(), vertices, &vertices, out.indices.data(), triangles,
+                              &triangles));
+  out.positions.assign(positions.begin(), positions.end());
+  return out;
 }
 
 }  // namespace viewer

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "options.h"
+#include "render_mesh.h"
 
 #include <proxima/proxima.h>
 
@@ -33,6 +34,8 @@ struct FrameData {
   std::vector<Polyline> polylines;
   bool polylines_valid = false;  // computed at polylines_pose: kept while the tool stays there
   proxPose polylines_pose{};
+  std::vector<proxVec3> polyline_points;         // the C API's output buffers, kept
+  std::vector<proxPolylineInfo> polyline_infos;  // from frame to frame
   proxWrench wrench{};
   bool threads = false;               // the world's threads run (else it was stepped)
   proxThreadStats thread_stats[3]{};  // haptic, local, global
@@ -58,6 +61,11 @@ class Scene {
   // What the streamed device saw; false when no streamed device drives the tool.
   bool stream_stats(proxStreamDeviceStats* stats) const;
   proxPose tool_pose() const;
+  // A line about the HID device driving the tool; empty when none does.
+  std::string hid_summary() const;
+  // The triangles of mesh A, or of the tool's mesh, to draw (the world's own,
+  // welded: any file the library reads).
+  RenderMesh render_mesh(bool tool) const;
 
   // The box the camera frames: both bodies over the tool's whole path.
   glm::dvec3 bounds_min() const { return bounds_min_; }
@@ -76,6 +84,7 @@ class Scene {
   proxMeshId mesh_a_{}, mesh_b_{};
   bool threads_ = false;
   proxStreamDeviceId stream_{};  // the mouse or gamepad device
+  uint32_t hid_ = 0;             // the HID device (hid_input.h), index + 1
   double cutoff_ = 0.0;
   proxForceSettings force_{};
   glm::dvec3 reference_local_{0.0};

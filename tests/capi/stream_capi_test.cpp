@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "expect.h"
+#include "support/marked_threads.h"
+#include "two_cubes.h"
 
 #include <algorithm>
 #include <atomic>
@@ -23,63 +25,16 @@
 #include <thread>
 #include <vector>
 
-#if !defined(__SANITIZE_THREAD__)
-#include <dlfcn.h>
-#include <pthread.h>
-#endif
-
-// ---- allocations and locks on the marked threads ------------------------------------
-// The recording device marks the haptic thread; the tests mark their pushing
-// threads around PushPose. Every allocation, and (outside ThreadSanitizer,
-// which owns pthread_mutex_lock itself) every mutex lock, made on a marked
-// thread is counted: libproxima.so's calls resolve to these definitions.
 namespace {
-thread_local bool t_marked = false;
-std::atomic<long> g_marked_allocations{0};
-std::atomic<long> g_marked_locks{0};
 
-void* allocate(std::size_t n) {
-  if (t_marked) g_marked_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t n) { return allocate(n); }
-void* operator new[](std::size_t n) { return allocate(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-
-#if !defined(__SANITIZE_THREAD__)
-namespace {
-using LockFn = int (*)(pthread_mutex_t*);
-// Looked up before main, while no test thread is marked.
-const LockFn g_real_lock = reinterpret_cast<LockFn>(dlsym(RTLD_NEXT, "pthread_mutex_lock"));
-}  // namespace
-extern "C" int pthread_mutex_lock(pthread_mutex_t* m) {
-  if (t_marked) g_marked_locks.fetch_add(1, std::memory_order_relaxed);
-  return g_real_lock(m);
-}
-#endif
-
-namespace {
+using prox::testing::mark_this_thread;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-proxPose at(double x) { return {{x, 0, 0}, {1, 0, 0, 0}}; }
-double length(const proxVec3& v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
+using capi_test::at;
+using capi_test::length;
+using capi_test::wait_until;
 proxVec3 minus(const proxVec3& a, const proxVec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-
-bool wait_until(const std::function<bool()>& done, double seconds = 60.0) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (std::chrono::steady_clock::now() < deadline) {
-    if (done()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  return done();
-}
 
 void sleep_seconds(double s) { std::this_thread::sleep_for(std::chrono::duration<double>(s)); }
 
@@ -96,7 +51,7 @@ struct Recorder {
   proxDeviceDef def() {
     proxDeviceDef d = proxDefaultDeviceDef();
     d.readPose = [](void* user, proxPose* pose) -> proxBool {
-      t_marked = true;
+      mark_this_thread(true);
       auto* self = static_cast<Recorder*>(user);
       if (!self->inner.readPose(self->inner.userData, pose)) return 0;
       const int i = self->poses.load(std::memory_order_relaxed);
@@ -116,32 +71,12 @@ struct Recorder {
 
 // Two 10 cm cubes: the wall static at the origin, the tool beside it along
 // +x, moved by a streamed device from 3 cm away (beyond the cutoff) to 7 mm.
-class Stream : public ::testing::Test {
+class Stream : public capi_test::TwoCubes {
  protected:
   static constexpr double kFar = 0.13, kNear = 0.107;
 
   void SetUp() override {
-    proxWorldDef def = proxDefaultWorldDef();
-    def.cutoff = 0.01;
-    def.force.safetyDistance = 0.001;
-    def.force.decayLength = 0.002;
-    ASSERT_OK(proxCreateWorld(&def, &world));
-    max_force = def.force.maxForce;
-    const double p[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
-    for (double v : p) positions.push_back(0.1 * v);
-    proxMeshDef md = proxDefaultMeshDef();
-    md.positions = positions.data();
-    md.vertexCount = 8;
-    md.indices = indices.data();
-    md.triangleCount = 12;
-    ASSERT_OK(proxWorld_CreateMesh(world, &md, &mesh));
-    proxBodyDef bd = proxDefaultBodyDef();
-    bd.mesh = mesh;
-    ASSERT_OK(proxWorld_CreateBody(world, &bd, &wall));
-    bd.type = PROX_BODY_TOOL;
-    bd.pose = at(kNear);
-    bd.referencePoint = {0.05, 0.05, 0.05};
-    ASSERT_OK(proxWorld_CreateBody(world, &bd, &tool));
+    ASSERT_NO_FATAL_FAILURE(create_scene(kNear));
     // The deterministic step's wrench at the near pose: what the threads
     // must render there.
     ASSERT_OK(proxWorld_Step(world));
@@ -193,12 +128,12 @@ class Stream : public ::testing::Test {
           held = pose, held_time = t, holding = true, held_for = 0;  // sent two frames late
           continue;
         }
-        t_marked = true;
+        mark_this_thread(true);
         const proxResult now = proxStreamDevice_PushPose(device, &pose, t);
         const bool send_late = holding && ++held_for == 2;
         const proxResult late =
             send_late ? proxStreamDevice_PushPose(device, &held, held_time) : PROX_SUCCESS;
-        t_marked = false;
+        mark_this_thread(false);
         push_results.push_back(now);
         if (send_late) push_results.push_back(late), holding = false;
       }
@@ -234,14 +169,7 @@ class Stream : public ::testing::Test {
     EXPECT_LE(largest, max_force + 1e-12);
   }
 
-  std::vector<double> positions;
-  std::vector<uint32_t> indices = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
-                                   2, 3, 7, 2, 7, 6, 1, 2, 6, 1, 6, 5, 0, 4, 7, 0, 7, 3};
-  proxWorldId world{};
-  proxMeshId mesh{};
-  proxBodyId wall{}, tool{};
   proxWrench expected{};
-  double max_force = 0.0;
   proxThreadsDef threads{};
   proxStreamDeviceId device{};
   Recorder recorder;
@@ -558,20 +486,18 @@ TEST_F(Stream, NeitherTheHapticThreadNorPushPoseAllocatesOrLocks) {
   stop_engine();
   ASSERT_OK(proxWorld_StopThreads(world));
   EXPECT_GT(recorder.poses.load(), 100);
-  EXPECT_EQ(g_marked_allocations.load(), 0) << "the haptic thread or PushPose allocated";
-#if !defined(__SANITIZE_THREAD__)
-  EXPECT_EQ(g_marked_locks.load(), 0) << "the haptic thread or PushPose took a mutex";
-#endif
+  EXPECT_EQ(prox::testing::marked_allocations(), 0) << "the haptic thread or PushPose allocated";
+  EXPECT_EQ(prox::testing::marked_locks(), 0) << "the haptic thread or PushPose took a mutex";
   // The counting sees inside the library: a call that locks the world
   // registry, and a refusal (its message is a new string), are counted.
-  t_marked = true;
+  mark_this_thread(true);
   proxWorld_IsValid(world);
   proxStreamDevice_PushPose(device, nullptr, 0.0);
-  t_marked = false;
-  EXPECT_GT(g_marked_allocations.load(), 0);
-#if !defined(__SANITIZE_THREAD__)
-  EXPECT_GT(g_marked_locks.load(), 0);
-#endif
+  mark_this_thread(false);
+  EXPECT_GT(prox::testing::marked_allocations(), 0);
+  if (prox::testing::kCountsLocks) {
+    EXPECT_GT(prox::testing::marked_locks(), 0);
+  }
 }
 
 }  // namespace

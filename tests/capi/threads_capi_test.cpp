@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "expect.h"
+#include "two_cubes.h"
 
 #include <atomic>
 #include <chrono>
@@ -18,54 +19,14 @@
 
 namespace {
 
-proxPose at(double x, double y = 0, double z = 0) { return {{x, y, z}, {1, 0, 0, 0}}; }
+using capi_test::at;
+using capi_test::length;
+using capi_test::wait_until;
 
-double length(const proxVec3& v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
-
-bool wait_until(const std::function<bool()>& done, double seconds = 60.0) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (std::chrono::steady_clock::now() < deadline) {
-    if (done()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  return done();
-}
-
-// Two 10 cm cubes: one static at the origin, one tool beside it along +x.
-class Threads : public ::testing::Test {
+// Two 10 cm cubes, the tool 3 cm from the wall: beyond the cutoff.
+class Threads : public capi_test::TwoCubes {
  protected:
-  void SetUp() override {
-    proxWorldDef def = proxDefaultWorldDef();
-    def.cutoff = 0.01;
-    def.force.safetyDistance = 0.001;
-    def.force.decayLength = 0.002;
-    ASSERT_OK(proxCreateWorld(&def, &world));
-    const double p[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
-    for (double x : p) positions.push_back(0.1 * x);
-    proxMeshDef md = proxDefaultMeshDef();
-    md.positions = positions.data();
-    md.vertexCount = 8;
-    md.indices = indices.data();
-    md.triangleCount = 12;
-    ASSERT_OK(proxWorld_CreateMesh(world, &md, &mesh));
-    proxBodyDef bd = proxDefaultBodyDef();
-    bd.mesh = mesh;
-    ASSERT_OK(proxWorld_CreateBody(world, &bd, &wall));
-    bd.type = PROX_BODY_TOOL;
-    bd.pose = at(0.13);
-    bd.referencePoint = {0.05, 0.05, 0.05};
-    ASSERT_OK(proxWorld_CreateBody(world, &bd, &tool));
-  }
-  void TearDown() override {
-    if (proxWorld_IsValid(world)) EXPECT_OK(proxDestroyWorld(world));
-  }
-
-  std::vector<double> positions;
-  std::vector<uint32_t> indices = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
-                                   2, 3, 7, 2, 7, 6, 1, 2, 6, 1, 6, 5, 0, 4, 7, 0, 7, 3};
-  proxWorldId world{};
-  proxMeshId mesh{};
-  proxBodyId wall{}, tool{};
+  void SetUp() override { ASSERT_NO_FATAL_FAILURE(create_scene(0.13)); }
 };
 
 TEST_F(Threads, ScriptedDevicesAreValidated) {

@@ -99,6 +99,13 @@ case $mode in
     [ "$soname" = libproxima.so.0 ] || fail "SONAME is '$soname', not libproxima.so.0"
     echo "ok: install tree: $lib/libproxima.so.$version (SONAME $soname), headers, CMake package, pkg-config file"
     consume_prefix "$work/prefix" "$work/prefix/$lib" "$work/prefix/$lib/pkgconfig" "install tree"
+    # The openxr component, in a build with the OpenXR device (its header is
+    # installed then): find_package finds OpenXR's headers for it.
+    if [ -e "$work/prefix/include/proxima/proxima_openxr.h" ]; then
+      configure_consumer "$work/cmake-openxr" "$work/prefix" "-DPROXIMA_COMPONENTS=gltf;openxr" ||
+        fail "install tree: find_package(proxima COMPONENTS openxr): $(cat "$work/cmake-openxr.log")"
+      echo "ok: install tree: find_package(proxima COMPONENTS openxr), with OpenXR's headers"
+    fi
     ;;
   deb)
     (cd "$work" && cpack -G DEB --config "$build/CPackConfig.cmake" >"$work/cpack.log" 2>&1) ||
@@ -109,6 +116,9 @@ case $mode in
     [ "$(dpkg-deb -f "$dev" Package)" = libproxima-dev ] || fail "$dev is not package libproxima-dev"
     dpkg-deb -f "$runtime" Depends | grep -q "libstdc++6" || fail "libproxima0 does not depend on libstdc++6"
     dpkg-deb -f "$dev" Depends | grep -q "libproxima0 (= $version)" || fail "libproxima-dev does not depend on libproxima0 (= $version)"
+    if dpkg-deb -c "$dev" | grep -q "proxima_openxr.h"; then
+      dpkg-deb -f "$dev" Depends | grep -q "libopenxr-dev" || fail "libproxima-dev has proxima_openxr.h but does not depend on libopenxr-dev"
+    fi
     # The runtime package holds the library and its SONAME link only.
     runtime_files=$(dpkg-deb -c "$runtime" | awk '{print $6}' | grep -v '/$' | sort | tr '\n' ' ')
     version_re=$(printf '%s' "$version" | sed 's/\./\\./g')

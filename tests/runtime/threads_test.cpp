@@ -8,6 +8,7 @@
 #include "runtime/scripted_device.h"
 #include "runtime/stream_device.h"
 #include "runtime/world.h"
+#include "support/marked_threads.h"
 #include "support/scenes.h"
 
 #include <gtest/gtest.h>
@@ -23,27 +24,6 @@
 #include <new>
 #include <random>
 #include <thread>
-
-// ---- allocations on the haptic thread ---------------------------------------------
-// The test device marks the thread that calls it (the haptic thread); every
-// allocation made on a marked thread is counted.
-namespace {
-thread_local bool t_on_haptic_thread = false;
-std::atomic<long> g_haptic_allocations{0};
-
-void* allocate(std::size_t n) {
-  if (t_on_haptic_thread) g_haptic_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t n) { return allocate(n); }
-void* operator new[](std::size_t n) { return allocate(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace prox::runtime {
 namespace {
@@ -62,7 +42,7 @@ struct FaultyDevice {
   Device device() { return {&FaultyDevice::read, &FaultyDevice::write, this, nullptr}; }
 
   static bool read(void* user, DevicePose* pose) {
-    t_on_haptic_thread = true;
+    prox::testing::mark_this_thread(true);
     auto* self = static_cast<FaultyDevice*>(user);
     const bool ok = self->inner.read_pose(self->inner.user, pose);
     switch (self->fault.load()) {
@@ -177,7 +157,7 @@ class ThreadsTest : public ::testing::Test {
     EXPECT_LE(r.max_force_step, settings_.max_force_rate * 0.005 + 1e-9);
     const HapticCounters c = world_->threads()->haptic_counters();
     EXPECT_EQ(c.torn_snapshots, 0u);
-    EXPECT_EQ(g_haptic_allocations.load(), 0) << "the haptic thread allocated";
+    EXPECT_EQ(prox::testing::marked_allocations(), 0) << "the haptic thread allocated";
   }
 
   WorldSettings world_settings_;
@@ -336,7 +316,8 @@ TEST_F(ThreadsTest, StreamedDeviceDrivesTheToolWithoutAllocating) {
   const ScriptedDevice path({ScriptedPose::of(far_), ScriptedPose::of(near_)}, 0.5, false);
   std::atomic<bool> stop{false};
   std::thread engine([&] {
-    t_on_haptic_thread = true;  // counted like the haptic thread: pushing must not allocate either
+    prox::testing::mark_this_thread(
+        true);  // counted like the haptic thread: pushing must not allocate either
     const double start = stream_clock();
     while (!stop.load()) {
       const double now = stream_clock();
@@ -360,7 +341,7 @@ TEST_F(ThreadsTest, StreamedDeviceDrivesTheToolWithoutAllocating) {
   EXPECT_GT(st.reads, 100u);
   const DeviceWrench w = stream.wrench();
   EXPECT_TRUE(std::isfinite(w.force[0] + w.force[1] + w.force[2]));
-  EXPECT_EQ(g_haptic_allocations.load(), 0) << "the haptic thread or the pusher allocated";
+  EXPECT_EQ(prox::testing::marked_allocations(), 0) << "the haptic thread or the pusher allocated";
 }
 
 TEST_F(ThreadsTest, BadSettingsAreRefusedByName) {

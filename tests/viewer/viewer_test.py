@@ -280,6 +280,40 @@ class ViewerTest(unittest.TestCase):
         self.assertGreaterEqual(sum(p[0] > p[2] for p in only_a), 0.95 * len(only_a))
 
 
+class ViewerGltfTest(unittest.TestCase):
+    def test_gltf_meshes_are_drawn_where_they_project(self):
+        # Khronos' Box.glb (a unit cube under a node rotation) as both bodies, B 1.5 m along x.
+        box = os.path.join(ASSETS, "gltf", "Box.glb")
+        pose = ("1.5", "0", "0", "1", "0", "0", "0")
+        images = {}
+        with tempfile.TemporaryDirectory() as d:
+            for show in ("meshes", "none"):
+                out = os.path.join(d, show)
+                r = run(box, box, "--pose-b", *pose, "--headless", "--validation", "--size", f"{SIZE[0]}x{SIZE[1]}",
+                        "--msaa", "1", "--show", show, "--out", out)
+                self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+                self.assertNotRegex(r.stderr, VALIDATION)
+                with open(os.path.join(out, "frame-0000.json")) as f:
+                    sidecar = json.load(f)
+                images[show] = png.read(os.path.join(out, "frame-0000.png"))
+        diff = changed(images["meshes"], images["none"])
+        boxes = []
+        for shift in (0.0, 1.5):
+            corners = [project(sidecar, [shift + x, y, z]) for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)]
+            for x, y, z in corners:
+                self.assertTrue(0 <= x < SIZE[0] and 0 <= y < SIZE[1] and 0 < z < 1, "the camera frames both boxes")
+            boxes.append((min(c[0] for c in corners), max(c[0] for c in corners),
+                          min(c[1] for c in corners), max(c[1] for c in corners)))
+            cx, cy, _ = project(sidecar, [shift, 0.0, 0.0])
+            self.assertIn((int(cx), int(cy)), diff, "nothing drawn where a box's centre projects")
+
+        def inside(p):
+            return any(x0 - 1 <= p[0] <= x1 + 1 and y0 - 1 <= p[1] <= y1 + 1 for x0, x1, y0, y1 in boxes)
+
+        self.assertGreater(len(diff), 2000)
+        self.assertEqual([p for p in diff if not inside(p)], [], "pixels drawn outside both boxes' projections")
+
+
 class ViewerRunTest(unittest.TestCase):
     def test_the_built_in_scene_moves_the_tool_on_the_threads(self):
         with tempfile.TemporaryDirectory() as d:
@@ -341,9 +375,12 @@ class ViewerRunTest(unittest.TestCase):
         bunny = os.path.join(ASSETS, "bunny.obj")
         with tempfile.TemporaryDirectory() as d:
             missing = os.path.join(d, "missing.obj")
+            broken = os.path.join(d, "broken.gltf")
+            with open(broken, "w") as f:
+                f.write('{"asset": {"version": "2.0"}, "meshes": [')
             cases = [
                 ((missing, bunny, "--headless"), 1, "missing.obj"),
-                ((os.path.join(ASSETS, "gltf", "Duck.glb"), bunny, "--headless"), 1, "OBJ"),
+                ((broken, bunny, "--headless"), 1, "broken.gltf"),
                 (("--show", "strings,bogus"), 2, "bogus"),
                 (("--size", "640"), 2, "WxH"),
                 (("--msaa", "2"), 2, "--msaa"),

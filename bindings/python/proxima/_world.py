@@ -378,6 +378,22 @@ class Mesh:
         check(lib.proxMesh_GetWarnings(self._idp[0], buffer, length[0] + 1, length))
         return ffi.string(buffer).decode("utf-8", "replace").splitlines()
 
+    def triangles(self):
+        """The mesh as Proxima uses it, in its own frame: (vertices (N, 3)
+        float64, triangles (M, 3) uint32), after welding and dropping the
+        triangles that repeat a vertex (the counts of info)."""
+        vertices = ffi.new("uint32_t*")
+        triangles = ffi.new("uint32_t*")
+        result = lib.proxMesh_GetTriangles(self._idp[0], ffi.NULL, 0, vertices, ffi.NULL, 0, triangles)
+        if result != CAPACITY:
+            check(result)
+        v = np.empty((vertices[0], 3), dtype=np.float64)
+        t = np.empty((triangles[0], 3), dtype=np.uint32)
+        check(lib.proxMesh_GetTriangles(self._idp[0], ffi.cast("double*", ffi.from_buffer(v)), vertices[0],
+                                        vertices, ffi.cast("uint32_t*", ffi.from_buffer(t)), triangles[0],
+                                        triangles))
+        return v, t
+
     def destroy(self):
         """Destroys the mesh; refused while bodies use it."""
         check(lib.proxMesh_Destroy(self._idp[0]))

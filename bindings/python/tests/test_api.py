@@ -33,6 +33,37 @@ def test_load_mesh_info_and_stats(world):
     assert stats.hierarchy_bytes > 0 and stats.hierarchy_seconds > 0
 
 
+def _triples(vertices, triangles):
+    """Each triangle as its three positions from its smallest vertex on
+    (the winding kept), sorted: comparable across vertex numberings."""
+    out = []
+    for tri in np.asarray(vertices)[np.asarray(triangles)]:
+        k = min(range(3), key=lambda i: tuple(tri[i]))
+        out.append(tuple(map(tuple, np.roll(tri, -k, axis=0))))
+    return sorted(out)
+
+
+def test_mesh_triangles_give_back_the_welded_mesh(world):
+    v, t = cube()
+    # Each triangle with vertices of its own, as glTF seams split them.
+    split_v = v[t.reshape(-1)]
+    split_t = np.arange(len(split_v)).reshape(-1, 3)
+    mesh = world.create_mesh(split_v, split_t)
+    vertices, triangles = mesh.triangles()
+    assert vertices.shape == (8, 3) and vertices.dtype == np.float64
+    assert triangles.shape == (12, 3) and triangles.dtype == np.uint32
+    assert _triples(vertices, triangles) == _triples(v, t)
+
+
+def test_mesh_triangles_of_the_bunny_file(world):
+    rows = [line.split() for line in BUNNY.read_text().splitlines()]
+    v = np.array([[float(x) for x in r[1:4]] for r in rows if r and r[0] == "v"])
+    t = np.array([[int(x.split("/")[0]) - 1 for x in r[1:4]] for r in rows if r and r[0] == "f"])
+    vertices, triangles = world.load_mesh(BUNNY).triangles()
+    assert len(triangles) == world.load_mesh(BUNNY).info.triangle_count
+    assert _triples(vertices, triangles) == _triples(v, t)
+
+
 def test_mesh_warnings_name_what_loading_skipped(world, tmp_path):
     # One triangle whose unused NORMAL accessor runs past its buffer view:
     # it loads, and the warning says which attribute was skipped.

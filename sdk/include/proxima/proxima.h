@@ -205,6 +205,18 @@ typedef struct proxMeshInfo {
 /* Game thread. */
 PROX_API proxResult proxMesh_GetInfo(proxMeshId mesh, proxMeshInfo* info);
 
+/* The mesh as Proxima uses it, in its own frame: the welded vertices (x, y, z
+ * each) and the kept triangles (three vertex indices each, counter-clockwise
+ * seen from outside), the counts proxMesh_GetInfo reports. For drawing a mesh
+ * loaded from a file, or exporting it. Sets *vertexCount and *triangleCount
+ * to the mesh's counts; copies the data when both arrays have room
+ * (positions: 3 * vertexCapacity doubles, indices: 3 * triangleCapacity), else
+ * copies nothing and returns PROX_ERROR_CAPACITY. Pass NULL arrays with
+ * capacities 0 to learn the counts first. Game thread. */
+PROX_API proxResult proxMesh_GetTriangles(proxMeshId mesh, double* positions, uint32_t vertexCapacity,
+                                          uint32_t* vertexCount, uint32_t* indices, uint32_t triangleCapacity,
+                                          uint32_t* triangleCount);
+
 /* What loading the mesh's file skipped without failing: attributes Proxima
  * does not read (NORMAL, TEXCOORD_0, ...) that are invalid, say a NORMAL
  * accessor running past its buffer view. One warning per line, each ending

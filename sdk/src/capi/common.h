@@ -82,6 +82,12 @@ runtime::World& world_of(proxWorldId id, const char* what = "world");
 void release_stream_devices(proxWorldId world);
 // Whether a device def is a streamed device's (its callbacks are Proxima's).
 bool is_stream_device_def(const proxDeviceDef& def);
+// HID devices (hid_device.cpp, built with PROX_WITH_HIDAPI): whether a def
+// is one's, whether that device belongs to `world`, and closing a world's
+// devices before the world is destroyed, with its threads stopped.
+bool is_hid_device_def(const proxDeviceDef& def);
+bool hid_device_of_world(const void* device, proxWorldId world);
+void release_hid_devices(proxWorldId world);
 
 inline runtime::Handle mesh_of(proxMeshId id, runtime::World*& world) {
   world = &world_of(id.world, "mesh's world");

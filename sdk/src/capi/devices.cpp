@@ -89,6 +89,12 @@ proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def) {
         !w->owns_device(def->userData))
       fail(PROX_ERROR_INVALID_ARGUMENT,
            "def is a built-in device of another world (a device can hold only its own world's tools)");
+#if PROX_WITH_HIDAPI
+    if (is_hid_device_def(*def) && !hid_device_of_world(def->userData, tool.world))
+      fail(PROX_ERROR_INVALID_ARGUMENT,
+           "def is a HID device of another world, or a closed one (a device can hold only its own world's "
+           "tools)");
+#endif
     auto adapter = std::make_shared<DeviceAdapter>(*def);
     runtime::Device d;
     d.read_pose = &DeviceAdapter::read;

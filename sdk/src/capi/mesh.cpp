@@ -142,6 +142,39 @@ proxResult proxMesh_GetInfo(proxMeshId mesh, proxMeshInfo* info) {
   });
 }
 
+proxResult proxMesh_GetTriangles(proxMeshId mesh, double* positions, uint32_t vertexCapacity,
+                                 uint32_t* vertexCount, uint32_t* indices, uint32_t triangleCapacity,
+                                 uint32_t* triangleCount) {
+  return guard("proxMesh_GetTriangles", [&] {
+    need(vertexCount, "vertexCount");
+    need(triangleCount, "triangleCount");
+    *vertexCount = 0;
+    *triangleCount = 0;
+    if (vertexCapacity > 0 && positions == nullptr)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "positions is NULL but vertexCapacity is > 0");
+    if (triangleCapacity > 0 && indices == nullptr)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "indices is NULL but triangleCapacity is > 0");
+    runtime::World* w = nullptr;
+    const runtime::Handle h = mesh_of(mesh, w);
+    const Mesh& m = w->mesh(h);
+    *vertexCount = m.vertex_count();
+    *triangleCount = m.triangle_count();
+    if (vertexCapacity < m.vertex_count() || triangleCapacity < m.triangle_count())
+      fail(PROX_ERROR_CAPACITY, "the mesh has " + std::to_string(m.vertex_count()) + " vertices and " +
+                                    std::to_string(m.triangle_count()) + " triangles; the capacities are " +
+                                    std::to_string(vertexCapacity) + " and " +
+                                    std::to_string(triangleCapacity));
+    for (uint32_t v = 0; v < m.vertex_count(); ++v) {
+      const Vec3& p = m.vertex(v);
+      positions[3 * v] = p.x;
+      positions[3 * v + 1] = p.y;
+      positions[3 * v + 2] = p.z;
+    }
+    for (uint32_t t = 0; t < m.triangle_count(); ++t)
+      for (int k = 0; k < 3; ++k) indices[3 * t + k] = m.indices(t)[k];
+  });
+}
+
 proxResult proxMesh_GetWarnings(proxMeshId mesh, char* buffer, int32_t capacity, int32_t* length) {
   return guard("proxMesh_GetWarnings", [&] {
     need(length, "length");

@@ -61,6 +61,9 @@ proxResult proxDestroyWorld(proxWorldId world) {
     // may still hold one of the world's streamed devices.
     doomed->stop_threads();
     release_stream_devices(world);
+#if PROX_WITH_HIDAPI
+    release_hid_devices(world);
+#endif
   });
 }
 

@@ -11,12 +11,82 @@
 
 namespace prox::detail {
 
+// The 15 separating axes of A's boxes against B's (SnchBox: every box of a
+// mesh has its mesh's axes), in A's frame: A's three axes, B's three, and
+// their nine cross products. They depend only on the rotation between the
+// meshes, so they are set up once per search.
+struct BoxAxes {
+  struct Axis {
+    Vec3 l;          // the axis, not normalised
+    Vec3 wa, wb;     // |l . A_k| and |l . B_k|: a box's reach along l is dot(half, w)
+    double inv_len;  // 1 / |l|
+  };
+  Axis axis[15];
+  int count = 0;
+
+  explicit BoxAxes(const glm::dmat3& rotation_b_to_a) {
+    const Vec3 e[3] = {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+    const Vec3 b[3] = {rotation_b_to_a[0], rotation_b_to_a[1], rotation_b_to_a[2]};  // glm: columns
+    auto add = [&](const Vec3& l) {
+      const double len = glm::length(l);
+      // Nearly parallel edges give an axis whose projections are all
+      // rounding; the face axes cover that case.
+      if (!(len > 1e-6)) return;
+      Axis& x = axis[count++];
+      x.l = l;
+      for (int k = 0; k < 3; ++k)
+        x.wa[k] = std::abs(glm::dot(l, e[k])), x.wb[k] = std::abs(glm::dot(l, b[k]));
+      x.inv_len = 1.0 / len;
+    };
+    for (const Vec3& a : e) add(a);
+    for (const Vec3& v : b) add(v);
+    for (const Vec3& a : e)
+      for (const Vec3& v : b) add(glm::cross(a, v));
+  }
+};
+
 // The searches run in A's local frame; B's nodes and triangles are moved
 // into it on the fly.
 struct Frames {
   Pose b_to_a;
-  explicit Frames(const PairQuery& q) : b_to_a(q.pose_a.inverse() * q.pose_b) {}
+  BoxAxes axes;
+  explicit Frames(const PairQuery& q) : b_to_a(q.pose_a.inverse() * q.pose_b), axes(b_to_a.rotation) {}
 };
+
+// Rounding in the projections, bounded generously: a box test never rejects
+// a pair closer than its limit by less than this.
+inline double box_slack(const SnchBox& a, const SnchBox& b, const Vec3& t) {
+  const Vec3 s = glm::abs(t) + a.half + b.half;
+  return 1e-9 * (s.x + s.y + s.z);
+}
+
+// Whether boxes `a` and `b` (B's box centre moved into A's frame is
+// a.center + t) are more than `limit` apart: along some separating axis the
+// gap between their projections exceeds it, a lower bound on the distance.
+// Only the six face axes: on cad-engine the nine edge axes rejected no node
+// pair the face axes let through, and cost more than the face axes.
+inline bool boxes_farther_than(const BoxAxes& axes, const SnchBox& a, const SnchBox& b, const Vec3& t,
+                               double limit) {
+  const double slack = box_slack(a, b, t);
+  for (int i = 0; i < 6; ++i) {  // the face axes come first and are never skipped
+    const BoxAxes::Axis& x = axes.axis[i];
+    const double gap = std::abs(glm::dot(t, x.l)) - glm::dot(a.half, x.wa) - glm::dot(b.half, x.wb);
+    if (gap * x.inv_len > limit + slack) return true;
+  }
+  return false;
+}
+
+// The largest of those gaps (a lower bound on the distance between the
+// boxes, less the rounding slack; may be negative).
+inline double box_lower_bound(const BoxAxes& axes, const SnchBox& a, const SnchBox& b, const Vec3& t) {
+  double best = -INFINITY;
+  for (int i = 0; i < axes.count; ++i) {
+    const BoxAxes::Axis& x = axes.axis[i];
+    const double gap = std::abs(glm::dot(t, x.l)) - glm::dot(a.half, x.wa) - glm::dot(b.half, x.wb);
+    best = std::max(best, gap * x.inv_len);
+  }
+  return best - box_slack(a, b, t);
+}
 
 inline Triangle moved(const Triangle& t, const Pose& pose) {
   return {{pose.apply(t.v[0]), pose.apply(t.v[1]), pose.apply(t.v[2])}};
@@ -80,10 +150,13 @@ inline bool g3_rejects(const NodePair& p) {
   return misses(p.a, dir, p.a.cone.axis, p.two_sided_a) || misses(p.b, -dir, p.axis_b, p.two_sided_b);
 }
 
-// Simultaneous descent of both trees; `use_cones` switches G2/G3 on; `leaf`
-// is called for every leaf pair that passes.
+// Simultaneous descent of both trees; `use_cones` switches G2/G3 on;
+// `use_boxes` adds the box test to G1's sphere test (the same pairs within the
+// cutoff reach the leaves, far fewer beyond it); `leaf` is called for every
+// leaf pair that passes.
 template <typename Leaf>
-void descend(const PairQuery& q, const Frames& frames, bool use_cones, GlobalSearchStats& stats, Leaf leaf) {
+void descend(const PairQuery& q, const Frames& frames, bool use_cones, bool use_boxes,
+             GlobalSearchStats& stats, Leaf leaf) {
   const Snch& ta = *q.snch_a;
   const Snch& tb = *q.snch_b;
   if (ta.nodes().empty() || tb.nodes().empty()) return;
@@ -102,7 +175,10 @@ void descend(const PairQuery& q, const Frames& frames, bool use_cones, GlobalSea
                      frames.b_to_a.rotate(nb.cone.axis),
                      ta.two_sided(),
                      tb.two_sided()};
-    if (g1_rejects(p, q.cutoff)) {
+    if (g1_rejects(p, q.cutoff) ||
+        (use_boxes &&
+         boxes_farther_than(frames.axes, ta.box(ia), tb.box(ib),
+                            frames.b_to_a.apply(tb.box(ib).center) - ta.box(ia).center, q.cutoff))) {
       ++stats.rejected_g1;
       continue;
     }
@@ -125,6 +201,12 @@ void descend(const PairQuery& q, const Frames& frames, bool use_cones, GlobalSea
       stack.emplace_back(ia, nb.first);
     }
   }
+}
+
+// Spheres only (the baseline, the reference and the polylines).
+template <typename Leaf>
+void descend(const PairQuery& q, const Frames& frames, bool use_cones, GlobalSearchStats& stats, Leaf leaf) {
+  descend(q, frames, use_cones, false, stats, leaf);
 }
 
 }  // namespace prox::detail

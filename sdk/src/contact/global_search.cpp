@@ -31,6 +31,7 @@ MeshFeature mesh_feature(const Mesh& mesh, std::uint32_t triangle, Feature f) {
 
 namespace {
 
+using detail::box_lower_bound;
 using detail::descend;
 using detail::Frames;
 using detail::moved;
@@ -69,7 +70,7 @@ void global_search_precise(const PairQuery& q, std::vector<LmdPair>& out, Global
   const Frames frames(q);
   const Mesh& ma = *q.mesh_a;
   const Mesh& mb = *q.mesh_b;
-  descend(q, frames, q.use_cones, stats, [&](std::uint32_t ta, std::uint32_t tb) {
+  descend(q, frames, q.use_cones, true, stats, [&](std::uint32_t ta, std::uint32_t tb) {
     const Triangle a = ma.triangle(ta);
     const Triangle b = moved(mb.triangle(tb), frames.b_to_a);
     // A cheap lower bound first (about 10 ns, the visibility test 140): when
@@ -169,12 +170,17 @@ double closest_pair(const PairQuery& q, double bound, bool first_below, std::uin
     std::uint32_t a, b;
     bool operator<(const Item& o) const { return lower > o.lower; }  // min-heap
   };
-  auto lower_bound = [&](const SnchNode& na, const SnchNode& nb) {
-    return glm::length(frames.b_to_a.apply(nb.center) - na.center) - na.radius - nb.radius;
+  // The better of the spheres' and the boxes' bounds.
+  auto lower_bound = [&](std::uint32_t ia, std::uint32_t ib) {
+    const SnchNode &na = ta.node(ia), &nb = tb.node(ib);
+    const double spheres = glm::length(frames.b_to_a.apply(nb.center) - na.center) - na.radius - nb.radius;
+    const SnchBox &ba = ta.box(ia), &bb = tb.box(ib);
+    return std::max(spheres,
+                    box_lower_bound(frames.axes, ba, bb, frames.b_to_a.apply(bb.center) - ba.center));
   };
   std::vector<Item> heap;
   heap.reserve(1024);
-  heap.push_back({lower_bound(ta.root(), tb.root()), 0u, 0u});
+  heap.push_back({lower_bound(0u, 0u), 0u, 0u});
   while (!heap.empty()) {
     std::pop_heap(heap.begin(), heap.end());
     const Item item = heap.back();
@@ -199,7 +205,7 @@ double closest_pair(const PairQuery& q, double bound, bool first_below, std::uin
       continue;
     }
     auto push = [&](std::uint32_t ia, std::uint32_t ib) {
-      const double lower = lower_bound(ta.node(ia), tb.node(ib));
+      const double lower = lower_bound(ia, ib);
       if (lower > limit) return;
       heap.push_back({lower, ia, ib});
       std::push_heap(heap.begin(), heap.end());

@@ -11,7 +11,7 @@ namespace prox {
 
 struct GlobalSearchStats {
   std::uint64_t node_pairs = 0;             // node pairs visited
-  std::uint64_t rejected_g1 = 0;            // spheres farther apart than the cutoff
+  std::uint64_t rejected_g1 = 0;            // spheres (or, precise, boxes) farther apart than the cutoff
   std::uint64_t rejected_g2 = 0;            // cones hold no opposite normals
   std::uint64_t rejected_g3 = 0;            // cones miss the lines between the spheres
   std::uint64_t leaf_pairs = 0;             // triangle pairs reaching the leaf tests

@@ -1,5 +1,6 @@
 #include "snch/snch.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -35,6 +36,15 @@ Sphere triangle_sphere(const Triangle& t) {
   double r = 0.0;
   for (const Vec3& v : t.v) r = std::max(r, glm::length(v - center));
   return {center, r};
+}
+
+// The box from lo to hi, its half extents rounded up so that it holds both.
+SnchBox box_between(const Vec3& lo, const Vec3& hi) {
+  SnchBox b;
+  b.center = 0.5 * (lo + hi);
+  const Vec3 half = glm::max(hi - b.center, b.center - lo);
+  b.half = half + 1e-12 * (half + glm::abs(b.center));
+  return b;
 }
 
 Sphere merge(const Sphere& a, const Sphere& b) {
@@ -110,6 +120,7 @@ Snch::Snch(const Mesh& mesh) {
   std::vector<std::uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
   nodes_.reserve(n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0);
+  boxes_.resize(n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0);
 
   struct Task {
     std::uint32_t node, begin, end, depth;
@@ -137,6 +148,9 @@ Snch::Snch(const Mesh& mesh) {
       leaf.cone = leaf_cone(mesh, t);
       leaf.first = t;
       leaf.second = SnchNode::kLeaf;
+      const Triangle tri = mesh.triangle(t);
+      boxes_[task.node] = box_between(glm::min(glm::min(tri.v[0], tri.v[1]), tri.v[2]),
+                                      glm::max(glm::max(tri.v[0], tri.v[1]), tri.v[2]));
       ++stats_.leaves;
       if (leaf.cone.unbounded()) ++stats_.unbounded_leaves;
       continue;
@@ -175,6 +189,7 @@ Snch::Snch(const Mesh& mesh) {
     for (std::uint32_t k = range[i].first; k < range[i].second; ++k)
       for (std::uint32_t v : mesh.indices(order[k]))
         lo = glm::min(lo, mesh.vertex(v)), hi = glm::max(hi, mesh.vertex(v));
+    boxes_[i] = box_between(lo, hi);
     const Vec3 centre = 0.5 * (lo + hi);
     double r2 = 0.0;
     for (std::uint32_t k = range[i].first; k < range[i].second; ++k)
@@ -205,7 +220,8 @@ Snch::Snch(const Mesh& mesh) {
     vertex_spread_[v] = std::min(spread, 0.5 * kPi);
   }
   stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
-  stats_.memory_bytes = nodes_.capacity() * sizeof(SnchNode) + vertex_spread_.capacity() * sizeof(double);
+  stats_.memory_bytes = nodes_.capacity() * sizeof(SnchNode) + boxes_.capacity() * sizeof(SnchBox) +
+                        vertex_spread_.capacity() * sizeof(double);
   stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

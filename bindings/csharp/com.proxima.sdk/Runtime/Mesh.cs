@@ -42,6 +42,20 @@ namespace Proxima
             }
         }
 
+        /// <summary>The mesh as Proxima uses it, in its own frame, after welding and dropping
+        /// the triangles that repeat a vertex (the counts of Info): x, y, z per vertex
+        /// and three vertex indices per triangle, counter-clockwise seen from outside.
+        /// For drawing a mesh loaded from a file (a Unity Mesh's vertices and triangles).</summary>
+        public void GetTriangles(out double[] positions, out uint[] indices)
+        {
+            Result r = Native.proxMesh_GetTriangles(id, null, 0, out uint vertices, null, 0, out uint triangles);
+            if (r != Result.Success && r != Result.Capacity) throw ProximaException.FromLastError(r);
+            positions = new double[3 * (long)vertices];
+            indices = new uint[3 * (long)triangles];
+            Native.Check(Native.proxMesh_GetTriangles(id, positions, vertices, out vertices, indices, triangles,
+                                                      out triangles));
+        }
+
         /// <summary>Fails while bodies use the mesh.</summary>
         public void Destroy() => Native.Check(Native.proxMesh_Destroy(id));
 

@@ -156,6 +156,10 @@ namespace Proxima
         internal static extern Result proxMesh_GetStats(MeshId mesh, out MeshStats stats);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxMesh_GetWarnings(MeshId mesh, byte[] buffer, int capacity, out int length);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxMesh_GetTriangles(MeshId mesh, double[] positions, uint vertexCapacity,
+                                                            out uint vertexCount, uint[] indices,
+                                                            uint triangleCapacity, out uint triangleCount);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern BodyDef proxDefaultBodyDef();

@@ -73,6 +73,31 @@ namespace Proxima.Tests
         }
 
         [Test]
+        public void TrianglesGiveBackTheWeldedMesh()
+        {
+            // The box with each triangle's vertices its own, as glTF seams split them.
+            double[] box = Support.BoxPositions(new Vec3(0, 0, 0), new Vec3(1, 1, 1));
+            uint[] boxIndices = Support.BoxIndices;
+            var split = new double[boxIndices.Length * 3];
+            var splitIndices = new uint[boxIndices.Length];
+            for (int i = 0; i < boxIndices.Length; i++)
+            {
+                for (int c = 0; c < 3; c++) split[3 * i + c] = box[3 * boxIndices[i] + c];
+                splitIndices[i] = (uint)i;
+            }
+            Mesh mesh = world.CreateMesh(split, splitIndices);
+            mesh.GetTriangles(out double[] positions, out uint[] indices);
+            Assert.AreEqual(3 * (int)mesh.Info.VertexCount, positions.Length);
+            Assert.AreEqual(box.Length, positions.Length, "welded back to the box's corners");
+            Assert.AreEqual(boxIndices.Length, indices.Length);
+            // Every triangle the same three corners in the same order as the input's.
+            for (int t = 0; t < indices.Length; t += 3)
+                for (int k = 0; k < 3; k++)
+                    for (int c = 0; c < 3; c++)
+                        Assert.AreEqual(split[3 * (t + k) + c], positions[3 * indices[t + k] + c]);
+        }
+
+        [Test]
         public void BadArraysAreNamed()
         {
             double[] p = Support.BoxPositions(new Vec3(0, 0, 0), new Vec3(1, 1, 1));

@@ -1,0 +1,241 @@
+// HID devices through hidapi (proxima_hid.h). A device is owned here, by
+// its world: proxHidDevice_Close stops its thread and closes it but keeps
+// the object until the world is destroyed, so a haptic loop still holding
+// it reads "no pose" from live memory rather than from a freed one.
+#include "capi/common.h"
+
+#include <proxima/proxima_hid.h>
+
+#include "devices/hid_device.h"
+
+using namespace prox;
+using namespace prox::capi;
+
+namespace {
+
+struct HidEntry {
+  std::uint64_t world = 0;  // world_key() of its world; 0: free
+  bool open = false;        // not closed: the id is valid
+  std::unique_ptr<devices::HidDevice> device;
+};
+
+std::mutex g_hid_mutex;  // game threads only
+std::vector<HidEntry> g_hid;
+
+std::uint64_t world_key(proxWorldId w) { return (std::uint64_t(w.index1) << 32) | w.generation; }
+
+// Under g_hid_mutex.
+devices::HidDevice& hid_of(proxHidDeviceId id) {
+  world_of(id.world, "device's world");
+  if (id.index1 == 0) fail(PROX_ERROR_INVALID_HANDLE, "device is a null id");
+  if (id.index1 > g_hid.size() || g_hid[id.index1 - 1].world != world_key(id.world))
+    fail(PROX_ERROR_INVALID_HANDLE, "device does not name a HID device of its world");
+  if (!g_hid[id.index1 - 1].open) fail(PROX_ERROR_INVALID_HANDLE, "device was closed");
+  return *g_hid[id.index1 - 1].device;
+}
+
+struct HidTrampoline {
+  static proxBool read(void* user, proxPose* pose) {
+    runtime::DevicePose p{};
+    if (!static_cast<devices::HidDevice*>(user)->read_pose(&p)) return 0;
+    *pose = {{p.position[0], p.position[1], p.position[2]},
+             {p.rotation[0], p.rotation[1], p.rotation[2], p.rotation[3]}};
+    return 1;
+  }
+  static void write(void* user, const proxWrench* w) {
+    static_cast<devices::HidDevice*>(user)->write_wrench(
+        {{w->force.x, w->force.y, w->force.z}, {w->torque.x, w->torque.y, w->torque.z}, w->clipped != 0});
+  }
+};
+
+void copy(char* out, std::size_t capacity, const std::string& s) {
+  const std::size_t n = std::min(s.size(), capacity - 1);
+  std::memcpy(out, s.data(), n);
+  out[n] = '\0';
+}
+
+void need_range(double v, double lo, double hi, const char* name) {
+  need_finite(v, name);
+  if (v < lo || v > hi)
+    fail(PROX_ERROR_INVALID_ARGUMENT, std::string(name) + " must be in [" + std::to_string(lo) + ", " +
+                                          std::to_string(hi) + "] (it is " + std::to_string(v) + ")");
+}
+
+}  // namespace
+
+namespace prox::capi {
+
+bool is_hid_device_def(const proxDeviceDef& def) { return def.readPose == &HidTrampoline::read; }
+
+bool hid_device_of_world(const void* device, proxWorldId world) {
+  std::lock_guard<std::mutex> lock(g_hid_mutex);
+  for (const HidEntry& e : g_hid)
+    if (e.device.get() == device) return e.open && e.world == world_key(world);
+  return false;
+}
+
+void release_hid_devices(proxWorldId world) {
+  const std::uint64_t key = world_key(world);
+  std::vector<std::unique_ptr<devices::HidDevice>> doomed;
+  {
+    std::lock_guard<std::mutex> lock(g_hid_mutex);
+    for (HidEntry& e : g_hid) {
+      if (e.world != key) continue;
+      doomed.push_back(std::move(e.device));
+      e = HidEntry{};
+    }
+  }
+  doomed.clear();  // joins their threads, outside the lock
+}
+
+}  // namespace prox::capi
+
+extern "C" {
+
+proxResult proxEnumerateHidDevices(proxHidDeviceInfo* infos, int32_t capacity, int32_t* count) {
+  return guard("proxEnumerateHidDevices", [&] {
+    need(count, "count");
+    *count = 0;
+    if (capacity < 0) fail(PROX_ERROR_INVALID_ARGUMENT, "capacity must be >= 0");
+    if (capacity > 0) need(infos, "infos");
+    const std::vector<devices::HidFound> found = devices::enumerate_hid_devices();
+    *count = int32_t(found.size());
+    for (std::size_t i = 0; i < found.size() && i < std::size_t(capacity); ++i) {
+      const devices::HidFound& f = found[i];
+      proxHidDeviceInfo& o = infos[i];
+      o = proxHidDeviceInfo{};
+      o.vendorId = f.vendor_id, o.productId = f.product_id;
+      o.profile = static_cast<proxHidProfile>(f.profile);
+      o.interfaceNumber = f.interface_number;
+      o.usagePage = f.usage_page, o.usage = f.usage;
+      copy(o.name, sizeof o.name, f.name);
+      copy(o.serial, sizeof o.serial, f.serial);
+      copy(o.path, sizeof o.path, f.path);
+    }
+    if (found.size() > std::size_t(capacity))
+      fail(PROX_ERROR_CAPACITY,
+           std::to_string(found.size()) + " devices are present; capacity is " + std::to_string(capacity));
+  });
+}
+
+proxHidDeviceDef proxDefaultHidDeviceDef(void) {
+  const devices::HidDeviceSettings s;
+  proxHidDeviceDef d{};
+  d.initialPose.rotation.w = 1.0;
+  d.linearSpeed = s.motion.linear_speed;
+  d.angularSpeed = s.motion.angular_speed;
+  d.deadZone = s.motion.dead_zone;
+  d.responseExponent = s.motion.exponent;
+  d.deviceToWorld.w = 1.0;
+  d.rumbleForce = s.output.rumble_force;
+  d.triggerForce = s.output.trigger_force;
+  d.outputRate = s.output_rate;
+  d.internalValue = kDefCookie;
+  return d;
+}
+
+proxResult proxWorld_OpenHidDevice(proxWorldId world, const proxHidDeviceDef* def, proxHidDeviceId* device) {
+  return guard("proxWorld_OpenHidDevice", [&] {
+    need(device, "device");
+    *device = proxHidDeviceId{};
+    world_of(world);
+    need(def, "def");
+    need_def(*def, "proxDefaultHidDeviceDef");
+    devices::HidDeviceSettings s;
+    if (def->path) s.path = def->path;
+    s.vendor_id = def->vendorId, s.product_id = def->productId;
+    const Pose start = to_pose(def->initialPose, "def->initialPose");
+    const glm::dquat q = glm::quat_cast(start.rotation);
+    const double rotation[4] = {q.w, q.x, q.y, q.z};
+    for (int i = 0; i < 3; ++i) s.initial_position[i] = start.translation[i];
+    for (int i = 0; i < 4; ++i) s.initial_rotation[i] = rotation[i];
+    const Vec3 ref = to_vec(def->referencePoint, "def->referencePoint");
+    for (int i = 0; i < 3; ++i) s.reference_local[i] = ref[i];
+    need_range(def->linearSpeed, 0.0, 100.0, "def->linearSpeed");
+    need_range(def->angularSpeed, 0.0, 100.0, "def->angularSpeed");
+    need_range(def->deadZone, 0.0, 0.9, "def->deadZone");
+    need_range(def->responseExponent, 1.0, 5.0, "def->responseExponent");
+    need_positive(def->rumbleForce, "def->rumbleForce");
+    need_positive(def->triggerForce, "def->triggerForce");
+    need_range(def->outputRate, 1e-3, 250.0, "def->outputRate");
+    double m[4] = {def->deviceToWorld.w, def->deviceToWorld.x, def->deviceToWorld.y, def->deviceToWorld.z};
+    for (const double v : m) need_finite(v, "def->deviceToWorld");
+    if (!normalize_quaternion(m))
+      fail(PROX_ERROR_INVALID_ARGUMENT, "def->deviceToWorld is a zero quaternion");
+    s.motion.linear_speed = def->linearSpeed;
+    s.motion.angular_speed = def->angularSpeed;
+    s.motion.dead_zone = def->deadZone;
+    s.motion.exponent = def->responseExponent;
+    for (int i = 0; i < 4; ++i) s.motion.device_to_world[i] = m[i];
+    s.output.rumble_force = def->rumbleForce;
+    s.output.trigger_force = def->triggerForce;
+    s.output_rate = def->outputRate;
+    std::string error;
+    std::unique_ptr<devices::HidDevice> d = devices::HidDevice::open(s, &error);
+    if (!d) fail(PROX_ERROR_FILE, error);
+    std::lock_guard<std::mutex> lock(g_hid_mutex);
+    std::size_t i = 0;
+    while (i < g_hid.size() && g_hid[i].world != 0) ++i;
+    if (i == g_hid.size()) g_hid.emplace_back();
+    g_hid[i].world = world_key(world);
+    g_hid[i].open = true;
+    g_hid[i].device = std::move(d);
+    *device = {uint32_t(i + 1), 0, world};
+  });
+}
+
+proxResult proxHidDevice_GetDeviceDef(proxHidDeviceId device, proxDeviceDef* def) {
+  return guard("proxHidDevice_GetDeviceDef", [&] {
+    need(def, "def");
+    std::lock_guard<std::mutex> lock(g_hid_mutex);
+    devices::HidDevice& d = hid_of(device);
+    *def = proxDefaultDeviceDef();
+    def->readPose = &HidTrampoline::read;
+    def->writeWrench = &HidTrampoline::write;
+    def->userData = &d;
+  });
+}
+
+proxResult proxHidDevice_GetStats(proxHidDeviceId device, proxHidDeviceStats* stats) {
+  return guard("proxHidDevice_GetStats", [&] {
+    need(stats, "stats");
+    *stats = proxHidDeviceStats{};
+    std::lock_guard<std::mutex> lock(g_hid_mutex);
+    const devices::HidStats s = hid_of(device).stats();
+    stats->profile = static_cast<proxHidProfile>(s.profile);
+    stats->connected = s.connected ? 1 : 0;
+    stats->reportsRead = s.reports_read;
+    stats->malformed = s.malformed;
+    stats->outputsWritten = s.outputs_written;
+    stats->failedWrites = s.failed_writes;
+    stats->disconnects = s.disconnects;
+    stats->reconnects = s.reconnects;
+    stats->poseReads = s.pose_reads;
+    stats->noPoseTicks = s.no_pose_ticks;
+    stats->lastReportAge = s.last_report_age;
+  });
+}
+
+proxResult proxHidDevice_GetPose(proxHidDeviceId device, proxPose* pose) {
+  return guard("proxHidDevice_GetPose", [&] {
+    need(pose, "pose");
+    std::lock_guard<std::mutex> lock(g_hid_mutex);
+    const runtime::DevicePose p = hid_of(device).pose();
+    *pose = {{p.position[0], p.position[1], p.position[2]},
+             {p.rotation[0], p.rotation[1], p.rotation[2], p.rotation[3]}};
+  });
+}
+
+proxResult proxHidDevice_Close(proxHidDeviceId device) {
+  return guard("proxHidDevice_Close", [&] {
+    devices::HidDevice* d = nullptr;
+    {
+      std::lock_guard<std::mutex> lock(g_hid_mutex);
+      d = &hid_of(device);
+      g_hid[device.index1 - 1].open = false;
+    }
+    d->close();  // the object stays until its world goes
+  });
+}
+
+}  // extern "C"

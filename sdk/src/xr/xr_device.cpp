@@ -1,0 +1,244 @@
+#include "xr/xr_device.h"
+
+#include "runtime/stream_device.h"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+
+namespace prox::xr {
+namespace {
+
+glm::dquat quat(const proxQuat& q) { return glm::dquat(q.w, q.x, q.y, q.z); }
+glm::dvec3 vec(const proxVec3& v) { return {v.x, v.y, v.z}; }
+
+bool finite(const double* v, int n) {
+  for (int i = 0; i < n; ++i)
+    if (!std::isfinite(v[i])) return false;
+  return true;
+}
+
+}  // namespace
+
+XrDevice::XrDevice(const XrSettings& settings) : settings_(settings), state_(settings.def.sessionState) {}
+
+XrDevice::~XrDevice() { stop(); }
+
+void XrDevice::start() {
+  running_.store(true);
+  thread_ = std::thread([this] { run(); });
+}
+
+void XrDevice::stop() {
+  if (!thread_.joinable()) return;
+  running_.store(false);
+  thread_.join();
+}
+
+void XrDevice::on_frame(XrTime predicted, XrDuration period, double clock_now) {
+  frame_.store({predicted, period, clock_now});
+}
+
+void XrDevice::run() {
+  using clock = std::chrono::steady_clock;
+  const auto period = std::chrono::duration_cast<clock::duration>(
+      std::chrono::duration<double>(1.0 / settings_.def.tickRate));
+  auto next = clock::now();
+  while (running_.load(std::memory_order_acquire)) {
+    tick();
+    next += period;
+    const auto now = clock::now();
+    if (next < now) next = now;  // late: no burst of catch-up ticks
+    std::this_thread::sleep_until(next);
+  }
+  if (vibrating_ && state_.load() == XR_SESSION_STATE_FOCUSED) stop_vibration();
+}
+
+// "Now" as an XrTime: from the timespec extension when the app enabled it,
+// else anchored on the last predicted display time the app reported.
+bool XrDevice::now_xr(double clock, XrTime* time) {
+  if (settings_.fn.convertTimespec) {
+    timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    const XrResult r = settings_.fn.convertTimespec(settings_.def.instance, &ts, time);
+    if (XR_FAILED(r)) {
+      fail_result(r);
+      return false;
+    }
+    return true;
+  }
+  time_from_frames_.store(true, std::memory_order_relaxed);
+  const Frame f = frame_.load();
+  if (f.predicted <= 0) return false;
+  *time = f.predicted + XrTime(std::llround((clock - f.clock) * 1e9));
+  return *time > 0;
+}
+
+bool XrDevice::locate(XrTime time, Located* out, bool with_velocity) {
+  XrSpaceVelocity velocity{};
+  velocity.type = XR_TYPE_SPACE_VELOCITY;
+  XrSpaceLocation location{};
+  location.type = XR_TYPE_SPACE_LOCATION;
+  if (with_velocity) location.next = &velocity;
+  locates_.fetch_add(1, std::memory_order_relaxed);
+  const XrResult r = settings_.fn.locateSpace(settings_.poseSpace, settings_.def.baseSpace, time, &location);
+  out->valid = false;
+  if (XR_FAILED(r)) {
+    fail_result(r);
+    return false;
+  }
+  const XrSpaceLocationFlags need =
+      XR_SPACE_LOCATION_POSITION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_VALID_BIT;
+  if ((location.locationFlags & need) != need) return false;
+  const XrPosef& p = location.pose;
+  out->time = time;
+  out->position[0] = p.position.x, out->position[1] = p.position.y, out->position[2] = p.position.z;
+  out->rotation[0] = p.orientation.w, out->rotation[1] = p.orientation.x, out->rotation[2] = p.orientation.y,
+  out->rotation[3] = p.orientation.z;
+  for (int k = 0; k < 3; ++k) out->velocity[k] = out->angular[k] = 0.0;
+  if (with_velocity && (velocity.velocityFlags & XR_SPACE_VELOCITY_LINEAR_VALID_BIT)) {
+    out->velocity[0] = velocity.linearVelocity.x, out->velocity[1] = velocity.linearVelocity.y,
+    out->velocity[2] = velocity.linearVelocity.z;
+  }
+  if (with_velocity && (velocity.velocityFlags & XR_SPACE_VELOCITY_ANGULAR_VALID_BIT)) {
+    out->angular[0] = velocity.angularVelocity.x, out->angular[1] = velocity.angularVelocity.y,
+    out->angular[2] = velocity.angularVelocity.z;
+  }
+  // A runtime's bad numbers never reach the haptic loop.
+  out->valid = finite(out->position, 3) && finite(out->rotation, 4) && finite(out->velocity, 3) &&
+               finite(out->angular, 3);
+  return out->valid;
+}
+
+// The tool's pose in Proxima's world: baseToWorld * grip(now) * toolInGrip,
+// the grip moved `ahead` seconds along its velocity (0 when located now).
+void XrDevice::push(const Located& grip, double ahead, double clock) {
+  glm::dvec3 position(grip.position[0], grip.position[1], grip.position[2]);
+  glm::dquat rotation(grip.rotation[0], grip.rotation[1], grip.rotation[2], grip.rotation[3]);
+  if (ahead != 0.0) {
+    position += glm::dvec3(grip.velocity[0], grip.velocity[1], grip.velocity[2]) * ahead;
+    const glm::dvec3 w(grip.angular[0], grip.angular[1], grip.angular[2]);
+    const double speed = glm::length(w);
+    if (speed > 0.0) rotation = glm::angleAxis(speed * ahead, w / speed) * rotation;  // omega is in base axes
+  }
+  const double norm = glm::length(rotation);
+  if (!(norm > 1e-6)) return;
+  rotation /= norm;
+  const proxXrDeviceDef& d = settings_.def;
+  const glm::dquat base_q = quat(d.baseToWorld.rotation), tool_q = quat(d.toolInGrip.rotation);
+  const glm::dvec3 in_base = position + rotation * vec(d.toolInGrip.position);
+  const glm::dvec3 world = vec(d.baseToWorld.position) + base_q * in_base;
+  const glm::dquat q = glm::normalize(base_q * rotation * tool_q);
+  const proxPose pose{{world.x, world.y, world.z}, {q.w, q.x, q.y, q.z}};
+  if (proxStreamDevice_PushPose(settings_.stream, &pose, clock) == PROX_SUCCESS)
+    pushed_.fetch_add(1, std::memory_order_relaxed);
+}
+
+void XrDevice::stop_vibration() {
+  vibrating_ = false;
+  if (settings_.def.hapticAction == XR_NULL_HANDLE) return;
+  XrHapticActionInfo info{};
+  info.type = XR_TYPE_HAPTIC_ACTION_INFO;
+  info.action = settings_.def.hapticAction;
+  info.subactionPath = settings_.def.subactionPath;
+  const XrResult r = settings_.fn.stopHaptic(settings_.def.session, &info);
+  stops_.fetch_add(1, std::memory_order_relaxed);
+  if (XR_FAILED(r) || r == XR_SESSION_NOT_FOCUSED) fail_result(r);
+}
+
+// The rendered force as vibration: a pulse longer than the send interval at
+// most vibrationRate times a second, so one replaces the last before it
+// ends; stopped as soon as the force is gone.
+void XrDevice::vibrate(double clock) {
+  const proxXrDeviceDef& d = settings_.def;
+  if (d.hapticAction == XR_NULL_HANDLE) return;
+  proxWrench w{};
+  double force = 0.0;
+  if (proxStreamDevice_GetWrench(settings_.stream, &w) == PROX_SUCCESS)
+    force = std::sqrt(w.force.x * w.force.x + w.force.y * w.force.y + w.force.z * w.force.z);
+  if (!std::isfinite(force)) force = 0.0;
+  const double amplitude = std::min(1.0, force / d.forceForFullAmplitude);
+  if (amplitude < 1e-3) {
+    if (vibrating_) stop_vibration();
+    return;
+  }
+  if (clock - last_send_ < 1.0 / d.vibrationRate) return;
+  last_send_ = clock;
+  XrHapticActionInfo info{};
+  info.type = XR_TYPE_HAPTIC_ACTION_INFO;
+  info.action = d.hapticAction;
+  info.subactionPath = d.subactionPath;
+  XrHapticVibration v{};
+  v.type = XR_TYPE_HAPTIC_VIBRATION;
+  v.amplitude = float(amplitude);
+  v.duration = XrDuration(std::llround(d.pulseDuration * 1e9));
+  v.frequency = XR_FREQUENCY_UNSPECIFIED;
+  const XrResult r =
+      settings_.fn.applyHaptic(d.session, &info, reinterpret_cast<const XrHapticBaseHeader*>(&v));
+  if (r == XR_SUCCESS) {
+    sent_.fetch_add(1, std::memory_order_relaxed);
+    last_amplitude_.store(v.amplitude, std::memory_order_relaxed);
+    vibrating_ = true;
+  } else {
+    refused_.fetch_add(1, std::memory_order_relaxed);
+    fail_result(r);
+  }
+}
+
+void XrDevice::tick() {
+  ticks_.fetch_add(1, std::memory_order_relaxed);
+  const XrSessionState state = state_.load(std::memory_order_acquire);
+  if (state != XR_SESSION_STATE_FOCUSED) {
+    // No pose (the stream goes stale and the force fades) and no call: the
+    // runtime stops haptics itself when focus goes.
+    not_focused_.fetch_add(1, std::memory_order_relaxed);
+    vibrating_ = false;
+    frame_grip_.valid = false;
+    return;
+  }
+  const double clock = runtime::stream_clock();
+  XrTime now = 0;
+  bool tracked = now_xr(clock, &now);
+  if (tracked && settings_.def.poseMode == PROX_XR_EXTRAPOLATE_FRAME) {
+    std::uint64_t version = 0;
+    const Frame f = frame_.load(&version);
+    if (version != frame_seen_ && f.predicted > 0) {
+      frame_seen_ = version;
+      locate(f.predicted, &frame_grip_, true);
+    }
+    tracked = frame_grip_.valid;
+    if (tracked) {
+      const double ahead = std::clamp(double(now - frame_grip_.time) * 1e-9, -settings_.def.maxExtrapolation,
+                                      settings_.def.maxExtrapolation);
+      push(frame_grip_, ahead, clock);
+    }
+  } else if (tracked) {
+    Located grip;
+    tracked = locate(now, &grip, false);
+    if (tracked) push(grip, 0.0, clock);
+  }
+  if (!tracked) untracked_.fetch_add(1, std::memory_order_relaxed);
+  vibrate(clock);
+}
+
+proxXrDeviceStats XrDevice::stats() const {
+  proxXrDeviceStats s{};
+  s.ticks = ticks_.load(std::memory_order_relaxed);
+  s.locates = locates_.load(std::memory_order_relaxed);
+  s.untrackedTicks = untracked_.load(std::memory_order_relaxed);
+  s.notFocusedTicks = not_focused_.load(std::memory_order_relaxed);
+  s.vibrationsSent = sent_.load(std::memory_order_relaxed);
+  s.vibrationsRefused = refused_.load(std::memory_order_relaxed);
+  s.stopsSent = stops_.load(std::memory_order_relaxed);
+  s.posesPushed = pushed_.load(std::memory_order_relaxed);
+  s.timeFromFrames = time_from_frames_.load(std::memory_order_relaxed) ? 1 : 0;
+  s.lastXrResult = last_result_.load(std::memory_order_relaxed);
+  s.lastAmplitude = last_amplitude_.load(std::memory_order_relaxed);
+  s.sessionState = state_.load(std::memory_order_relaxed);
+  return s;
+}
+
+}  // namespace prox::xr

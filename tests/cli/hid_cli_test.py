@@ -1,0 +1,148 @@
+"""The proxima tool with HID devices emulated from the real descriptors, run by ctest:
+
+    python3 hid_cli_test.py PATH_TO_PROXIMA PATH_TO_PROXIMA_HID_EMULATE PATH_TO_SHARED_ASSETS
+
+proxima_hid_emulate (tests/hid/hid_emulate.cpp) plugs the devices in, feeds
+the reports given, runs proxima and records what each device was written.
+The reports are built here from the layouts in the shared devices folder.
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+PROXIMA = EMULATE = None
+
+DEVICES = {  # name: (vid:pid, profile, usage, interface)
+    "spacenavigator": ("046d:c626", "spacemouse-split", 0x08, 0),
+    "spacemouse_wireless": ("256f:c62e", "spacemouse", 0x08, 0),
+    "ds4v2": ("054c:09cc", "dualshock4", 0x05, 3),
+    "dualsense": ("054c:0ce6", "dualsense", 0x05, 3),
+}
+
+
+def le16(v):
+    return (v & 0xFFFF).to_bytes(2, "little")
+
+
+def pad(name, lx=128, ly=128, rx=128, ry=128):
+    """A pad's input report 0x01 (64 bytes), nothing pressed."""
+    b = bytearray(64)
+    b[0], b[1], b[2], b[3], b[4] = 1, lx, ly, rx, ry
+    b[5 if name == "ds4v2" else 8] = 0x08  # hat released
+    return b.hex()
+
+
+def puck(name, x=0, y=0, z=0):
+    """Translation: report 1 of the split layout (7 bytes) or of the combined one (13)."""
+    if name == "spacenavigator":
+        return (b"\x01" + le16(x) + le16(y) + le16(z)).hex()
+    return (b"\x01" + le16(x) + le16(y) + le16(z) + bytes(6)).hex()
+
+
+def left(name):
+    """Full deflection towards -x (the default scene's A)."""
+    return pad(name, lx=0) if name in ("ds4v2", "dualsense") else puck(name, x=-350)
+
+
+def rest(name):
+    return pad(name) if name in ("ds4v2", "dualsense") else puck(name)
+
+
+def right(name):
+    return pad(name, lx=255) if name in ("ds4v2", "dualsense") else puck(name, x=350)
+
+
+class HidCliTest(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.dir.cleanup()
+
+    def emulate(self, devices, sends, *command):
+        record = os.path.join(self.dir.name, "record.json")
+        args = [EMULATE]
+        for d in devices:
+            args += ["--device", d]
+        for device, seconds, report in sends:
+            args += ["--send", str(device), str(seconds), report]
+        r = subprocess.run(args + ["--record", record, "--", PROXIMA, *command], capture_output=True, text=True,
+                           timeout=240)
+        with open(record) as f:
+            return r, json.load(f)["devices"]
+
+    def test_devices_lists_every_profile(self):
+        out = os.path.join(self.dir.name, "devices.json")
+        names = list(DEVICES)
+        r, _ = self.emulate(names, [], "devices", "--json", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(out) as f:
+            listed = json.load(f)["devices"]
+        self.assertEqual(len(listed), 4, "one entry a device: the SpaceNavigator's vendor collections are left out")
+        for i, (name, d) in enumerate(zip(names, listed)):
+            ids, profile, usage, interface = DEVICES[name]
+            self.assertEqual(f"{d['vendor_id']}:{d['product_id']}", ids)
+            self.assertEqual(d["profile"], profile)
+            self.assertEqual(d["path"], f"/dev/hidraw{i}")
+            self.assertEqual((d["usage_page"], d["usage"], d["interface"]), (1, usage, interface))
+            self.assertIn(f"{ids}  {profile}", r.stdout)
+            self.assertIn(f"/dev/hidraw{i}", r.stdout)
+
+    def test_devices_with_none_present(self):
+        r, _ = self.emulate([], [], "devices")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("no supported HID devices found", r.stdout)
+
+    def test_run_drives_the_tool_and_feels_the_contact(self):
+        # Path T's start is 5 cm from A; full deflection is 0.1 m/s towards
+        # it: about 0.56 s reaches contact, then back out.
+        for name in DEVICES:
+            with self.subTest(name):
+                ids = DEVICES[name][0]
+                out = os.path.join(self.dir.name, name + ".json")
+                sends = [(0, 0, left(name)), (0, 0.56, rest(name)), (0, 1.2, right(name)), (0, 1.5, rest(name))]
+                r, record = self.emulate([name], sends, "run", "--device", "hid:" + ids, "--seconds", "1.5",
+                                         "--hold", "0.5", "--json", out)
+                self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+                self.assertIn("device: HID " + DEVICES[name][1], r.stdout)
+                with open(out) as f:
+                    report = json.load(f)
+                hid = report["hid"]
+                self.assertEqual(hid["profile"], DEVICES[name][1])
+                self.assertGreaterEqual(hid["reports_read"], 2)
+                self.assertEqual(hid["malformed"], 0)
+                self.assertEqual(hid["failed_writes"], 0)
+                first, last = hid["first_pose"], hid["last_pose"]
+                self.assertLess(last[0], first[0] - 0.01, "the tool moved towards A")
+                self.assertEqual(last[1:3], [0, 0])
+                self.assertGreater(report["device"]["max_force"], 0.0, "the contact was felt")
+                writes = record[0]["writes"]
+                # The stats are read before the device is closed: it may write once more.
+                self.assertIn(len(writes) - hid["outputs_written"], (0, 1))
+                self.assertGreaterEqual(len(writes), 1)
+                if name == "dualsense":
+                    self.assertGreater(max(int(w[6:8], 16) for w in writes), 0, "rumble")
+                    self.assertTrue(any(w[22:24] == "01" for w in writes), "trigger resistance")
+                    self.assertEqual(record[0]["feature_requests"], [5])
+                elif name == "ds4v2":
+                    self.assertGreater(max(int(w[10:12], 16) for w in writes), 0, "rumble")
+                    self.assertEqual(record[0]["feature_requests"], [2])
+                else:
+                    self.assertIn("0401", writes, "the LED lit in contact")
+
+    def test_run_refuses_what_is_not_there(self):
+        r, _ = self.emulate(["ds4v2"], [], "run", "--device", "hid:256f:c62e", "--seconds", "0.1")
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("256f:c62e", r.stderr)
+        r, _ = self.emulate([], [], "run", "--device", "hid:zz:12", "--seconds", "0.1")
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("hid:VVVV:PPPP", r.stderr)
+
+
+if __name__ == "__main__":
+    PROXIMA, EMULATE = sys.argv[1], sys.argv[2]
+    os.environ.setdefault("PROXIMA_ASSETS", sys.argv[3])
+    unittest.main(argv=sys.argv[:1])

@@ -1,0 +1,102 @@
+// minimum_distance (behind proxBody_GetDistance) and any_closer_than against
+// the brute-force reference, on CAD parts with long thin triangles and on the
+// bunny; and the SNCH's boxes, which both searches cull with.
+#include "support/scenes.h"
+
+#include "contact/global_search.h"
+
+#include <gtest/gtest.h>
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace prox::testing {
+namespace {
+
+struct Pair {
+  const char* name;
+  std::shared_ptr<const Model> a, b;
+};
+
+std::vector<Pair> pairs() {
+  // 2CylinderEngine's cylinder block and crankcase, ReciprocatingSaw's two
+  // housing halves (PerNode order), and the bunny against itself.
+  return {
+      {"2CylinderEngine parts", load_gltf_model("gltf/2CylinderEngine.glb", 9),
+       load_gltf_model("gltf/2CylinderEngine.glb", 8)},
+      {"ReciprocatingSaw halves", load_gltf_model("gltf/ReciprocatingSaw.glb", 0),
+       load_gltf_model("gltf/ReciprocatingSaw.glb", 2)},
+      {"bunny", load_obj_model("bunny.obj"), load_obj_model("bunny.obj")},
+  };
+}
+
+// The minimum distance is the smallest LMD distance; the reference finds
+// every LMD within the cutoff with the same exact kernel, so the two agree
+// up to the rounding between tied triangle pairs (1e-18 of the size).
+TEST(MinimumDistance, MatchesTheReferenceOnCadPartsAndTheBunny) {
+  PairState state;
+  for (const Pair& pair : pairs()) {
+    ASSERT_TRUE(pair.a && pair.b) << pair.name;
+    const double size = std::max(pair.a->size, pair.b->size);
+    const double cutoff = 0.03 * size;
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> log_gap(std::log(1e-4 * size), std::log(cutoff));
+    for (int i = 0; i < 20; ++i) {
+      const Pose pose = pose_at_gap(*pair.a, *pair.b, std::exp(log_gap(rng)), rng);
+      const PairQuery q = make_query(*pair.a, Pose{}, *pair.b, pose, cutoff);
+      ProximityResult ref;
+      find_lmds(q, Method::Reference, state, ref);
+      ASSERT_FALSE(ref.lmds.empty()) << pair.name << " pose " << i;
+      double expected = std::numeric_limits<double>::infinity();
+      for (const LmdPair& p : ref.lmds) expected = std::min(expected, p.distance);
+      const double d = minimum_distance(q, std::numeric_limits<double>::infinity());
+      const double tolerance = 1e-15 * size;
+      EXPECT_NEAR(d, expected, tolerance) << pair.name << " pose " << i;
+      // Bounded: nothing closer below the answer, the answer above it.
+      EXPECT_GE(minimum_distance(q, 0.999 * expected), expected - tolerance) << pair.name << " pose " << i;
+      EXPECT_NEAR(minimum_distance(q, 1.001 * expected), expected, tolerance) << pair.name << " pose " << i;
+      EXPECT_TRUE(any_closer_than(q, 1.001 * expected)) << pair.name << " pose " << i;
+      EXPECT_FALSE(any_closer_than(q, 0.999 * expected)) << pair.name << " pose " << i;
+    }
+  }
+}
+
+// Every node's box holds the vertices of every triangle below it.
+TEST(Snch, BoxesHoldTheirTriangles) {
+  for (const Pair& pair : pairs()) {
+    ASSERT_TRUE(pair.a) << pair.name;
+    const Snch& snch = *pair.a->snch;
+    const Mesh& mesh = pair.a->mesh;
+    std::vector<std::uint32_t> stack{0u};
+    std::vector<std::uint32_t> below;
+    std::size_t checked = 0;
+    for (std::uint32_t i = 0; i < snch.nodes().size(); i += 7) {  // a sample of nodes, leaves and inner
+      below.clear();
+      stack.assign(1, i);
+      while (!stack.empty()) {
+        const SnchNode& n = snch.node(stack.back());
+        stack.pop_back();
+        if (n.is_leaf()) {
+          below.push_back(n.first);
+        } else {
+          stack.push_back(n.first);
+          stack.push_back(n.second);
+        }
+      }
+      const SnchBox& box = snch.box(i);
+      for (std::uint32_t t : below)
+        for (const Vec3& v : mesh.triangle(t).v) {
+          const Vec3 off = glm::abs(v - box.center);
+          ASSERT_TRUE(off.x <= box.half.x && off.y <= box.half.y && off.z <= box.half.z)
+              << pair.name << " node " << i << " triangle " << t;
+        }
+      ++checked;
+    }
+    EXPECT_GT(checked, 0u) << pair.name;
+  }
+}
+
+}  // namespace
+}  // namespace prox::testing

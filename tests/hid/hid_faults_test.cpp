@@ -1,0 +1,400 @@
+// HID devices with the world's threads running: the outputs for an approach
+// into contact and back out; unplugging mid-run (the force fades, the device
+// is found again and resumes where it was); malformed reports and a flood;
+// two devices at once; closing while the threads run; and that the haptic
+// thread neither allocates nor locks with a HID device attached.
+#include "hid/hid_test_support.h"
+
+#include <atomic>
+#include <cstdlib>
+#include <memory>
+#include <new>
+
+#if !defined(__SANITIZE_THREAD__)
+#include <dlfcn.h>
+#include <pthread.h>
+#endif
+
+// ---- allocations and locks on the haptic thread ------------------------------------
+// As in tests/capi/stream_capi_test.cpp: the recorder marks the haptic
+// thread; allocations and (outside ThreadSanitizer) mutex locks made on a
+// marked thread are counted.
+namespace {
+thread_local bool t_marked = false;
+std::atomic<long> g_marked_allocations{0};
+std::atomic<long> g_marked_locks{0};
+
+void* allocate(std::size_t n) {
+  if (t_marked) g_marked_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+}  // namespace
+
+void* operator new(std::size_t n) { return allocate(n); }
+void* operator new[](std::size_t n) { return allocate(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+#if !defined(__SANITIZE_THREAD__)
+namespace {
+using LockFn = int (*)(pthread_mutex_t*);
+// Looked up at the first lock: GLib's constructors lock before this file's
+// static initialisers would run.
+std::atomic<LockFn> g_real_lock{nullptr};
+}  // namespace
+extern "C" int pthread_mutex_lock(pthread_mutex_t* m) {
+  if (t_marked) g_marked_locks.fetch_add(1, std::memory_order_relaxed);
+  LockFn real = g_real_lock.load(std::memory_order_acquire);
+  if (!real) {
+    real = reinterpret_cast<LockFn>(dlsym(RTLD_NEXT, "pthread_mutex_lock"));
+    g_real_lock.store(real, std::memory_order_release);
+  }
+  return real(m);
+}
+#endif
+
+using namespace prox::test;
+
+namespace {
+
+// Around the HID device's def: records on the haptic thread, into storage
+// reserved before the threads start, the poses read and the forces handed.
+struct Recorder {
+  static constexpr int kCapacity = 30000;
+  proxDeviceDef inner{};
+  std::unique_ptr<double[]> force{new double[kCapacity]};
+  std::atomic<int> wrenches{0};
+  std::atomic<long> poses{0}, no_pose{0};
+  std::atomic<double> last_x{0.0};
+
+  proxDeviceDef def() {
+    proxDeviceDef d = proxDefaultDeviceDef();
+    d.readPose = [](void* user, proxPose* pose) -> proxBool {
+      t_marked = true;
+      auto* self = static_cast<Recorder*>(user);
+      if (!self->inner.readPose(self->inner.userData, pose)) {
+        self->no_pose.fetch_add(1, std::memory_order_relaxed);
+        return 0;
+      }
+      self->poses.fetch_add(1, std::memory_order_relaxed);
+      self->last_x.store(pose->position.x, std::memory_order_relaxed);
+      return 1;
+    };
+    d.writeWrench = [](void* user, const proxWrench* w) {
+      auto* self = static_cast<Recorder*>(user);
+      self->inner.writeWrench(self->inner.userData, w);
+      const int i = self->wrenches.load(std::memory_order_relaxed);
+      if (i < kCapacity)
+        self->force[i] = length(w->force), self->wrenches.store(i + 1, std::memory_order_release);
+    };
+    d.userData = this;
+    return d;
+  }
+  double last_force() const {
+    const int n = wrenches.load(std::memory_order_acquire);
+    return n > 0 ? force[n - 1] : 0.0;
+  }
+};
+
+class HidThreads : public HidScene {
+ protected:
+  // Opens the first device with these ids and lets it hold the tool.
+  proxHidDeviceId attach(std::uint16_t vid, std::uint16_t pid, double speed = 0.02,
+                         double output_rate = 250.0) {
+    proxHidDeviceDef def = def_for(vid, pid);
+    def.linearSpeed = speed;
+    def.outputRate = output_rate;
+    proxHidDeviceId d{};
+    EXPECT_OK(proxWorld_OpenHidDevice(world, &def, &d));
+    EXPECT_OK(proxHidDevice_GetDeviceDef(d, &recorder.inner));
+    const proxDeviceDef rd = recorder.def();
+    EXPECT_OK(proxBody_SetDevice(tool, &rd));
+    return d;
+  }
+  void start() {
+    const proxThreadsDef t = proxDefaultThreadsDef();
+    ASSERT_OK(proxWorld_StartThreads(world, &t));
+  }
+  // Holds `push` until the tool's x passes `x` (down to it when `down`), then sends `rest`.
+  void drive_to(int dev, proxHidDeviceId d, const Bytes& push, const Bytes& rest, double x, bool down) {
+    bus.send(dev, push);
+    EXPECT_TRUE(wait_until([&] {
+      const double at = pose_of(d).position.x;
+      return down ? at <= x : at >= x;
+    })) << "the tool is at "
+        << pose_of(d).position.x;
+    bus.send(dev, rest);
+    EXPECT_TRUE(bus.drain(dev, 5.0));
+  }
+  void expect_haptic_thread_clean() {
+    EXPECT_GT(recorder.poses.load() + recorder.no_pose.load(), 20);  // it ran
+    EXPECT_EQ(g_marked_allocations.load(), 0) << "the haptic thread allocated";
+#if !defined(__SANITIZE_THREAD__)
+    EXPECT_EQ(g_marked_locks.load(), 0) << "the haptic thread locked a mutex";
+    // The interposition does see the library's locks: a game-thread call takes some.
+    t_marked = true;
+    stats_of(device);
+    t_marked = false;
+    EXPECT_GT(g_marked_locks.load(), 0);
+    g_marked_locks = 0;
+#endif
+  }
+
+  Recorder recorder;
+  proxHidDeviceId device{};
+};
+
+}  // namespace
+
+// The DualSense's rumble, trigger resistance and light bar for an approach
+// to 6.5 mm from the wall and back out: nothing while far, rising with the
+// force, back to rest after.
+TEST_F(HidThreads, OutputsFollowTheForceIntoContactAndBackOut) {
+  const int dev = bus.add(device_spec("dualsense"));
+  // 25 outputs a second at most: slower than the force changes, so the limit binds.
+  device = attach(0x054c, 0x0ce6, 0.02, 25.0);
+  start();
+  sleep_seconds(0.3);
+  EXPECT_TRUE(bus.writes(dev).empty()) << "outputs while far from everything";
+  const Bytes centre = dualsense_report(128, 128, 128, 128);
+  drive_to(dev, device, dualsense_report(0, 128, 128, 128), centre, kFar - 0.0235, true);
+  sleep_seconds(0.4);
+  const double felt = recorder.last_force();
+  EXPECT_GT(felt, 0.05);
+  const std::vector<Bytes> in = bus.writes(dev);
+  ASSERT_FALSE(in.empty());
+  int last = 0;
+  for (const Bytes& w : in) {
+    ASSERT_EQ(w.size(), 48u);
+    ASSERT_EQ(w[0], 0x02);
+    EXPECT_GE(int(w[3]), last) << "the rumble fell while approaching";
+    last = w[3];
+    EXPECT_EQ(w[3], w[4]);
+    EXPECT_EQ(w[45], w[3]);        // red rises with the force
+    EXPECT_EQ(w[46], 255 - w[3]);  // green falls
+  }
+  const Bytes& near = in.back();
+  // 3 N is full: the rumble and the trigger's resistance are the force's share of it.
+  EXPECT_NEAR(near[3], felt / 3.0 * 255.0, 3.0);
+  EXPECT_EQ(near[11], 0x01);  // constant resistance
+  EXPECT_NEAR(near[13], felt / 3.0 * 255.0, 3.0);
+  // Back out.
+  drive_to(dev, device, dualsense_report(255, 128, 128, 128), centre, kFar - 0.005, false);
+  ASSERT_TRUE(wait_until([&] { return recorder.last_force() == 0.0; }));
+  sleep_seconds(0.1);
+  const std::vector<Bytes> all = bus.writes(dev);
+  ASSERT_GT(all.size(), in.size());
+  const Bytes& rest = all.back();
+  EXPECT_EQ(rest[3], 0);
+  EXPECT_EQ(rest[4], 0);
+  EXPECT_EQ(rest[11], 0x05);  // trigger effect off
+  EXPECT_EQ(rest[13], 0);
+  EXPECT_EQ(rest[46], 255);
+  // Only when it changed: no two consecutive writes alike.
+  for (std::size_t i = 1; i < all.size(); ++i) EXPECT_NE(all[i], all[i - 1]) << i;
+  const proxHidDeviceStats s = stats_of(device);
+  EXPECT_EQ(s.outputsWritten, all.size());
+  EXPECT_EQ(s.failedWrites, 0u);
+  // At most 25 a second: consecutive writes at least 40 ms apart (less 4 ms
+  // of arrival jitter).
+  const std::vector<double> t = bus.write_times(dev);
+  ASSERT_GT(t.size(), 3u);
+  for (std::size_t i = 1; i < t.size(); ++i) EXPECT_GE(t[i] - t[i - 1], 0.036) << i;
+  ASSERT_OK(proxWorld_StopThreads(world));
+  expect_haptic_thread_clean();
+}
+
+// A device that takes half a second to answer each write holds up only its
+// own thread: the haptic loop keeps its rate, game-thread calls return at
+// once, and closing waits for the one write under way at most.
+TEST_F(HidThreads, ADeviceThatStopsAnsweringWritesBlocksNothingElse) {
+  const int dev = bus.add(device_spec("dualsense"));
+  device = attach(0x054c, 0x0ce6);
+  start();
+  bus.set_write_delay(dev, 0.5);
+  drive_to(dev, device, dualsense_report(0, 128, 128, 128), dualsense_report(128, 128, 128, 128),
+           kFar - 0.0235, true);
+  ASSERT_TRUE(wait_until([&] { return !bus.writes(dev).empty(); }));  // one write is hanging now
+  const long before = recorder.poses.load();
+  const double t0 = proxGetTime();
+  sleep_seconds(0.3);
+  const double ticked = double(recorder.poses.load() - before) / (proxGetTime() - t0);
+  EXPECT_GT(ticked, 300.0) << "haptic ticks a second while a write hangs";
+  const double s0 = proxGetTime();
+  stats_of(device);
+  EXPECT_LT(proxGetTime() - s0, 0.05);
+  const double c0 = proxGetTime();
+  ASSERT_OK(proxHidDevice_Close(device));
+  EXPECT_LT(proxGetTime() - c0, 0.6);
+  ASSERT_OK(proxWorld_StopThreads(world));
+  EXPECT_EQ(g_marked_allocations.load(), 0) << "the haptic thread allocated";
+#if !defined(__SANITIZE_THREAD__)
+  EXPECT_EQ(g_marked_locks.load(), 0) << "the haptic thread locked a mutex";
+#endif
+}
+
+TEST_F(HidThreads, DualShock4RumbleAndLightBar) {
+  const int dev = bus.add(device_spec("ds4v2"));
+  device = attach(0x054c, 0x09cc);
+  start();
+  const Bytes centre = ds4_report(128, 128, 128, 128);
+  drive_to(dev, device, ds4_report(0, 128, 128, 128), centre, kFar - 0.0235, true);
+  sleep_seconds(0.4);
+  const double felt = recorder.last_force();
+  std::vector<Bytes> w = bus.writes(dev);
+  ASSERT_FALSE(w.empty());
+  ASSERT_EQ(w.back().size(), 32u);
+  EXPECT_EQ(w.back()[0], 0x05);
+  EXPECT_EQ(w.back()[1], 0x03);
+  EXPECT_NEAR(w.back()[5], felt / 3.0 * 255.0, 3.0);
+  EXPECT_EQ(w.back()[6], w.back()[5]);  // red
+  drive_to(dev, device, ds4_report(255, 128, 128, 128), centre, kFar - 0.005, false);
+  ASSERT_TRUE(wait_until([&] { return recorder.last_force() == 0.0; }));
+  sleep_seconds(0.1);
+  w = bus.writes(dev);
+  EXPECT_EQ(w.back()[4], 0);
+  EXPECT_EQ(w.back()[5], 0);
+  EXPECT_EQ(w.back()[7], 255);
+  ASSERT_OK(proxWorld_StopThreads(world));
+  expect_haptic_thread_clean();
+}
+
+TEST_F(HidThreads, UnplugFadesAndReconnectResumesWhereItWas) {
+  const int dev = bus.add(device_spec("ds4v2"));
+  device = attach(0x054c, 0x09cc);
+  start();
+  const Bytes centre = ds4_report(128, 128, 128, 128);
+  drive_to(dev, device, ds4_report(0, 128, 128, 128), centre, kFar - 0.0235, true);
+  sleep_seconds(0.3);
+  ASSERT_GT(recorder.last_force(), 0.05);
+  const proxPose held = pose_of(device);
+  bus.unplug(dev);
+  ASSERT_TRUE(wait_until([&] { return !stats_of(device).connected; }));
+  // No pose: the gate fades the force out.
+  ASSERT_TRUE(wait_until([&] { return recorder.last_force() == 0.0; }));
+  const long missing = recorder.no_pose.load();
+  EXPECT_GT(missing, 0);
+  EXPECT_EQ(stats_of(device).disconnects, 1u);
+  bus.replug(dev);
+  ASSERT_TRUE(wait_until([&] { return stats_of(device).connected; }, 5.0));
+  const proxHidDeviceStats s = stats_of(device);
+  EXPECT_EQ(s.reconnects, 1u);
+  const proxPose back = pose_of(device);
+  EXPECT_EQ(back.position.x, held.position.x);
+  EXPECT_EQ(back.position.y, held.position.y);
+  EXPECT_EQ(back.position.z, held.position.z);
+  // The force comes back, and the device answers again at its new node.
+  ASSERT_TRUE(wait_until([&] { return recorder.last_force() > 0.05; }));
+  const std::uint64_t read = stats_of(device).reportsRead;
+  bus.send(dev, ds4_report(128, 130, 128, 128));
+  ASSERT_TRUE(wait_until([&] { return stats_of(device).reportsRead > read; }));
+  ASSERT_OK(proxWorld_StopThreads(world));
+  expect_haptic_thread_clean();
+}
+
+TEST_F(HidThreads, MalformedReportsAreCountedAndAFloodIsReadWhole) {
+  const int dev = bus.add(device_spec("dualsense"));
+  device = attach(0x054c, 0x0ce6);
+  start();
+  Bytes shorter(10, 0), longer(65, 0), unknown(64, 0);
+  shorter[0] = 0x01, longer[0] = 0x01, unknown[0] = 0x31;
+  bus.send(dev, shorter);
+  bus.send(dev, longer);
+  bus.send(dev, unknown);
+  ASSERT_TRUE(bus.drain(dev, 5.0));
+  ASSERT_TRUE(wait_until([&] { return stats_of(device).malformed == 3; }));
+  EXPECT_EQ(stats_of(device).reportsRead, 0u);
+  EXPECT_NEAR(pose_of(device).position.x, kFar, 1e-15);
+  // 5,000 reports queued at once: every one read, each on its own.
+  const int kFlood = 5000;
+  const double t0 = proxGetTime();
+  for (int i = 0; i < kFlood; ++i) bus.send(dev, dualsense_report(128, 128, 128, 128));
+  ASSERT_TRUE(bus.drain(dev, 30.0));
+  ASSERT_TRUE(wait_until([&] { return stats_of(device).reportsRead == std::uint64_t(kFlood); }));
+  const double seconds = proxGetTime() - t0;
+  std::printf("flood: %d reports read in %.3f s (%.0f a second)\n", kFlood, seconds, kFlood / seconds);
+  EXPECT_EQ(stats_of(device).malformed, 3u);
+  EXPECT_LT(stats_of(device).lastReportAge, 1.0);
+  ASSERT_OK(proxWorld_StopThreads(world));
+  expect_haptic_thread_clean();
+}
+
+TEST_F(HidThreads, TwoDevicesAtOnce) {
+  const int pad = bus.add(device_spec("ds4v2"));
+  const int puck = bus.add(device_spec("spacenavigator"));
+  // Fast enough that a report read late under a loaded machine still moves each visibly.
+  device = attach(0x054c, 0x09cc, 0.1);
+  proxHidDeviceDef def = def_for(0x046d, 0xc626);
+  def.linearSpeed = 0.1;
+  proxHidDeviceId other;
+  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &other));
+  start();
+  bus.send(pad, ds4_report(128, 128, 128, 128, 0, 255));  // R2: up
+  bus.send(puck, puck_split(1, 0, 350, 0));               // towards the user: +z
+  sleep_seconds(0.15);
+  bus.send(pad, ds4_report(128, 128, 128, 128));
+  bus.send(puck, puck_split(1, 0, 0, 0));
+  ASSERT_TRUE(bus.drain(pad, 5.0));
+  ASSERT_TRUE(bus.drain(puck, 5.0));
+  ASSERT_TRUE(
+      wait_until([&] { return stats_of(device).reportsRead == 2 && stats_of(other).reportsRead == 2; }));
+  const proxPose a = pose_of(device), b = pose_of(other);
+  EXPECT_GT(a.position.y, 0.001);
+  EXPECT_NEAR(a.position.z, 0.0, 1e-15);
+  EXPECT_GT(b.position.z, 0.001);
+  EXPECT_NEAR(b.position.y, 0.0, 1e-15);
+  // The haptic loop follows the one holding the tool.
+  ASSERT_TRUE(wait_until([&] { return std::fabs(recorder.last_x.load() - a.position.x) < 1e-12; }));
+  ASSERT_OK(proxWorld_StopThreads(world));
+  expect_haptic_thread_clean();
+}
+
+TEST_F(HidThreads, ClosedWhileTheThreadsRun) {
+  const int dev = bus.add(device_spec("spacemouse_wireless"));
+  device = attach(0x256f, 0xc62e);
+  start();
+  bus.send(dev, puck_combined(100, 0, 0, 0, 0, 0));
+  ASSERT_TRUE(wait_until([&] { return recorder.poses.load() > 50; }));
+  ASSERT_OK(proxHidDevice_Close(device));
+  const long before = recorder.no_pose.load();
+  ASSERT_TRUE(wait_until([&] { return recorder.no_pose.load() > before + 50; }));
+  // A closed device is refused for a tool, and its id everywhere.
+  ASSERT_OK(proxWorld_StopThreads(world));
+  proxDeviceDef dd;
+  EXPECT_FAILS(proxHidDevice_GetDeviceDef(device, &dd), PROX_ERROR_INVALID_HANDLE, "closed");
+  const proxDeviceDef stale = recorder.inner;
+  EXPECT_FAILS(proxBody_SetDevice(tool, &stale), PROX_ERROR_INVALID_ARGUMENT, "HID device");
+  EXPECT_EQ(g_marked_allocations.load(), 0);
+}
+
+TEST_F(HidThreads, AnotherWorldsDeviceIsRefusedAndDestroyingTheWorldClosesIt) {
+  bus.add(device_spec("ds4v2"));
+  proxHidDeviceDef def = def_for(0, 0);
+  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &device));
+  proxDeviceDef dd;
+  ASSERT_OK(proxHidDevice_GetDeviceDef(device, &dd));
+  proxWorldDef wd = proxDefaultWorldDef();
+  proxWorldId second;
+  ASSERT_OK(proxCreateWorld(&wd, &second));
+  proxBodyDef bd = proxDefaultBodyDef();
+  bd.mesh = proxMeshId{};
+  proxMeshDef md = proxDefaultMeshDef();
+  md.positions = positions.data();
+  md.vertexCount = 8;
+  md.indices = indices.data();
+  md.triangleCount = 12;
+  proxMeshId m;
+  ASSERT_OK(proxWorld_CreateMesh(second, &md, &m));
+  bd.mesh = m;
+  bd.type = PROX_BODY_TOOL;
+  proxBodyId t;
+  ASSERT_OK(proxWorld_CreateBody(second, &bd, &t));
+  EXPECT_FAILS(proxBody_SetDevice(t, &dd), PROX_ERROR_INVALID_ARGUMENT, "another world");
+  ASSERT_OK(proxDestroyWorld(second));
+  ASSERT_OK(proxDestroyWorld(world));
+  proxHidDeviceStats s;
+  EXPECT_EQ(proxHidDevice_GetStats(device, &s), PROX_ERROR_INVALID_HANDLE);
+}

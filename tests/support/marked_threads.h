@@ -1,0 +1,35 @@
+// Counts what the haptic path must never do: the test marks a thread (the
+// haptic thread, through its device callback; a pusher around PushPose), and
+// every allocation (operator new) and, outside ThreadSanitizer, which owns
+// pthread_mutex_lock itself, every mutex lock made on a marked thread is
+// counted. Link the proxima_marked_threads object library into the test
+// executable: its replacements of operator new and pthread_mutex_lock then
+// also catch the calls libproxima.so makes.
+#pragma once
+
+namespace prox::testing {
+
+// Marks or unmarks the calling thread.
+void mark_this_thread(bool marked);
+bool this_thread_marked();
+// Counts since the program started, over every marked thread.
+long marked_allocations();
+long marked_locks();
+// Whether mutex locks are counted in this build (not under ThreadSanitizer).
+constexpr bool kCountsLocks =
+#if defined(__SANITIZE_THREAD__)
+    false;
+#else
+    true;
+#endif
+
+// Marks the calling thread for its scope.
+class MarkedScope {
+ public:
+  MarkedScope() { mark_this_thread(true); }
+  ~MarkedScope() { mark_this_thread(false); }
+  MarkedScope(const MarkedScope&) = delete;
+  MarkedScope& operator=(const MarkedScope&) = delete;
+};
+
+}  // namespace prox::testing
