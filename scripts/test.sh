@@ -46,7 +46,7 @@ echo "== thread sanitizer (the tests labelled 'threads': handoffs, runtime threa
 configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=thread -DPROX_BUILD_SAMPLES=OFF
 cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests \
   proxima_capi_stream_tests proxima_capi_timing_tests \
-  proxima_hid_capi_tests proxima_openxr_tests
+  proxima_hid_capi_tests proxima_openxr_tests proxima_coupling_threads_tests
 ctest --test-dir build/tsan --output-on-failure -L threads
 
 echo "== fuzzers (libFuzzer, ASan + UBSan): each target 20 s on corpora from the shared assets (docs/robustness.md)"

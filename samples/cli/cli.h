@@ -123,7 +123,7 @@ inline Settings scaled_to(Settings s, double cutoff) {
 class Scene {
  public:
   Scene(const Settings& settings, const std::string& path_a, const std::string& path_b,
-        const proxPose& pose_a, const proxPose& pose_b) {
+        const proxPose& pose_a, const proxPose& pose_b, proxToolMode tool_mode = PROX_TOOL_FREE) {
     proxWorldDef def = proxDefaultWorldDef();
     def.method = settings.method;
     def.cutoff = settings.cutoff;
@@ -142,6 +142,7 @@ class Scene {
       body.type = PROX_BODY_TOOL;
       body.pose = pose_b;
       body.referencePoint = centre(info);
+      body.toolMode = tool_mode;
       check(proxWorld_CreateBody(world_, &body, &b_));
     });
   }

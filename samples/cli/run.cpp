@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <memory>
 
 namespace proxcli {
 namespace {
@@ -113,6 +114,37 @@ const char* stream_mode_name(proxStreamMode m) {
   return m == PROX_STREAM_HOLD ? "hold" : m == PROX_STREAM_EXTRAPOLATE ? "extrapolate" : "interpolate";
 }
 
+// --tool-mode constrained: what the proxy and the device pose did. The
+// proxy's exact distance comes from proxBody_GetDistance (a constrained
+// tool's distance is its proxy's); whether the device pose is inside, from a
+// second world holding a free copy of the tool placed at the device pose
+// (proxBody_GetPose of a constrained tool). While it crosses, the device's
+// penetration is taken as its distance from the proxy.
+struct ProxyWatch {
+  Scene ghost;
+  double min_proxy_distance = INFINITY;
+  double max_device_penetration = 0.0;
+  uint64_t samples = 0;
+
+  ProxyWatch(const Settings& settings, const std::string& path_a, const std::string& path_b,
+             const proxPose& start)
+      : ghost(settings, path_a, path_b, identity(), start) {}
+
+  void sample(const Scene& scene, const proxPose& device) {
+    double d = 0.0;
+    check(proxBody_GetDistance(scene.a(), scene.b(), INFINITY, &d));
+    min_proxy_distance = std::min(min_proxy_distance, d);
+    proxPose proxy;
+    check(proxBody_GetProxyPose(scene.b(), &proxy));
+    check(proxBody_SetPose(ghost.b(), &device));
+    double device_distance = 0.0;
+    check(proxBody_GetDistance(ghost.a(), ghost.b(), 0.0, &device_distance));
+    if (device_distance == 0.0)
+      max_device_penetration = std::max(max_device_penetration, length(sub(device.position, proxy.position)));
+    ++samples;
+  }
+};
+
 }  // namespace
 
 // `run`: the threaded runtime in real time. B moves along path T (or the
@@ -129,6 +161,7 @@ int run(Args& args) {
   proxStreamMode stream_mode = PROX_STREAM_INTERPOLATE;
   Settings settings = preset(PROX_FORCE_PRESET_HARD);
   proxThreadsDef threads = proxDefaultThreadsDef();
+  proxToolMode tool_mode = PROX_TOOL_FREE;
   if (!args.empty() && args.peek().rfind("--", 0) != 0) {
     path_a = args.next("mesh A");
     path_b = args.next("mesh B");
@@ -179,6 +212,15 @@ int run(Args& args) {
       threads.localPriority = kLocalPriority;
     } else if (opt == "--lock-memory") {
       threads.lockMemory = 1;
+    } else if (opt == "--tool-mode") {
+      // The constrained tool (docs/coupling.md).
+      const std::string mode = args.next("--tool-mode value");
+      if (mode == "free")
+        tool_mode = PROX_TOOL_FREE;
+      else if (mode == "constrained")
+        tool_mode = PROX_TOOL_CONSTRAINED;
+      else
+        fail("--tool-mode: '" + mode + "' is not free or constrained");
     } else {
       fail("run: unknown option '" + opt + "'");
     }
@@ -186,7 +228,8 @@ int run(Args& args) {
   const bool streamed = device_kind == "stream";
   const bool hid = is_hid_kind(device_kind);  // the tool follows the device from the path's start
   if (path_b.empty()) path_b = path_a;
-  Scene scene(settings, path_a, path_b, identity(), identity());
+  const bool constrained = tool_mode == PROX_TOOL_CONSTRAINED;
+  auto scene_ptr = std::make_unique<Scene>(settings, path_a, path_b, identity(), identity());
   std::vector<proxPose> path;
   if (!poses_path.empty()) {
     path = read_poses(poses_path);
@@ -195,13 +238,21 @@ int run(Args& args) {
                 settings.cutoff);
   } else {
     const double far = kPathFar, near = kPathNear;
-    path = {translation(x_at_gap(scene, far)), translation(x_at_gap(scene, near))};
+    path = {translation(x_at_gap(*scene_ptr, far)), translation(x_at_gap(*scene_ptr, near))};
     std::printf(
         "run: path T, %s held and moved along +x against %s from %.3g m to %.3g m apart in %.3g s, "
         "then %.3g s still, cutoff %.3g m\n",
         path_b.c_str(), path_a.c_str(), far, near, seconds, hold, settings.cutoff);
   }
   const double seconds_per_pose = seconds / static_cast<double>(path.size() - 1);
+  // A constrained tool's proxy starts where it is created: where the path
+  // does, clear of A.
+  std::unique_ptr<ProxyWatch> watch;
+  if (constrained) {
+    scene_ptr = std::make_unique<Scene>(settings, path_a, path_b, identity(), path.front(), tool_mode);
+    watch = std::make_unique<ProxyWatch>(settings, path_a, path_b, path.front());
+  }
+  Scene& scene = *scene_ptr;
   check(proxBody_SetPose(scene.b(), &path.front()));
 
   proxScriptedDeviceId scripted{};
@@ -264,14 +315,18 @@ int run(Args& args) {
   }
   std::printf("%8s %12s %9s %12s\n", "time s", "tool x m", "contacts", "|force| N");
   const auto start = std::chrono::steady_clock::now();
+  // A constrained tool's proxy is measured every 10 ms (every tenth printed).
+  const int per_row = constrained ? 10 : 1;
   for (int frame = 0;; ++frame) {
-    const double t = 0.1 * frame;
+    const double t = 0.1 * frame / per_row;
     std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                               std::chrono::duration<double>(t)));
     proxPose pose;
     check(proxBody_GetPose(scene.b(), &pose));
-    std::printf("%8.1f %12.6f %9zu %12.4f\n", t, pose.position.x, scene.contacts().size(),
-                length(scene.wrench().force));
+    if (watch) watch->sample(scene, pose);
+    if (frame % per_row == 0)
+      std::printf("%8.1f %12.6f %9zu %12.4f\n", t, pose.position.x, scene.contacts().size(),
+                  length(scene.wrench().force));
     if (t >= seconds + hold - 1e-9) break;
   }
   check(proxWorld_StopThreads(scene.world()));
@@ -342,6 +397,12 @@ int run(Args& args) {
       static_cast<unsigned long long>(safety.limitedTicks),
       static_cast<unsigned long long>(safety.tornSnapshots));
 
+  if (watch)
+    std::printf(
+        "proxy: closest %.6g m to the other body (safety distance %.6g m); the device went %.6g m "
+        "inside\n",
+        watch->min_proxy_distance, settings.force.safetyDistance, watch->max_device_penetration);
+
   if (!json_path.empty()) {
     auto count = [](uint64_t n) { return static_cast<long long>(n); };
     Json j;
@@ -396,6 +457,12 @@ int run(Args& args) {
       j.key("max_sample_interval_ms").value(stream_stats.maxSampleInterval * 1e3);
       j.key("max_extrapolation_ms").value(stream_stats.maxExtrapolation * 1e3);
       j.end_object();
+    }
+    j.key("tool_mode").value(constrained ? "constrained" : "free");
+    if (watch) {
+      j.key("min_proxy_distance").value(watch->min_proxy_distance);
+      j.key("max_device_penetration").value(watch->max_device_penetration);
+      j.key("proxy_samples").value(static_cast<long long>(watch->samples));
     }
     if (hid) hid_json(*hid_run, j);
     j.key("safety").begin_object();

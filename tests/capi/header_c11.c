@@ -11,7 +11,7 @@ _Static_assert(sizeof(proxBodyId) == 16, "proxBodyId");
 _Static_assert(sizeof(proxPose) == 56, "proxPose");
 _Static_assert(sizeof(proxWorldDef) == 64, "proxWorldDef");
 _Static_assert(sizeof(proxMeshDef) == 32, "proxMeshDef");
-_Static_assert(sizeof(proxBodyDef) == 112, "proxBodyDef");
+_Static_assert(sizeof(proxBodyDef) == 152, "proxBodyDef");
 _Static_assert(sizeof(proxContact) == 112, "proxContact");
 _Static_assert(sizeof(proxWrench) == 56, "proxWrench");
 _Static_assert(sizeof(proxWorldStats) == 32, "proxWorldStats");
@@ -37,6 +37,7 @@ _Static_assert(sizeof(proxStreamDeviceDef) == 40, "proxStreamDeviceDef");
 _Static_assert(sizeof(proxStreamDeviceStats) == 80, "proxStreamDeviceStats");
 _Static_assert(sizeof(proxStreamMode) == 4, "enums are 32-bit");
 _Static_assert(sizeof(proxHapticTiming) == 4, "enums are 32-bit");
+_Static_assert(sizeof(proxToolMode) == 4, "enums are 32-bit");
 
 int main(void) {
   const proxVersion v = proxGetVersion();

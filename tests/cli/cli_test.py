@@ -228,6 +228,35 @@ class CliTest(unittest.TestCase):
         last = [l.split() for l in r.stdout.splitlines() if l.strip() and l.split()[0].replace(".", "").isdigit()][-1]
         self.assertGreater(float(last[3]), 0.0)
 
+    def test_run_constrained_tool_stays_outside(self):
+        # A 1 cm cube pushed straight through a 2 cm cube and back by the
+        # scripted device: the constrained tool's proxy stays outside (its
+        # exact distance never below the hard settings' 0.3 mm safety
+        # distance) while the device pose goes in.
+        def cube(name, h):
+            v = "".join(f"v {x} {y} {z}\n" for x in (-h, h) for y in (-h, h) for z in (-h, h))
+            f = ("f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n")
+            return write(self.dir.name, name, v + f)
+        a, b = cube("a.obj", 0.01), cube("b.obj", 0.005)
+        poses = write(self.dir.name, "through.txt",
+                      "0.02 0.001 0.002 1 0 0 0\n-0.02 0.001 0.002 1 0 0 0\n0.02 0.001 0.002 1 0 0 0\n")
+        json_path = os.path.join(self.dir.name, "run.json")
+        r = run("run", a, b, "--tool-mode", "constrained", "--poses", poses, "--seconds", "0.6",
+                "--hold", "0.3", "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("proxy: closest", r.stdout)
+        with open(json_path) as f:
+            out = json.load(f)
+        self.assertEqual(out["tool_mode"], "constrained")
+        self.assertGreater(out["proxy_samples"], 50)
+        self.assertGreaterEqual(out["min_proxy_distance"], 0.0003 * (1 - 1e-6))
+        self.assertGreater(out["max_device_penetration"], 0.005)
+        self.assertTrue(out["device"]["all_finite"])
+        self.assertLessEqual(out["device"]["max_force"], 3.0 + 1e-9)
+        self.assertGreater(out["device"]["max_force"], 1.0)  # the coupling pulled the hand back
+        for name in ("haptic", "local", "global"):
+            self.assertGreater(out["threads"][name]["updates"], 0)
+
     def test_run_takes_the_timing_and_real_time_options(self):
         json_path = os.path.join(self.dir.name, "run.json")
         r = run("run", self.tri, self.tri, "--seconds", "0.2", "--hold", "0", "--haptic-timing", "spin",
@@ -311,6 +340,7 @@ class CliTest(unittest.TestCase):
             (("run", "--wobble"), "unknown option"),
             (("run", "--device", "joystick"), "--device"),
             (("run", "--haptic-timing", "fast"), "--haptic-timing"),
+            (("run", "--tool-mode", "sticky"), "--tool-mode"),
             (("run", "--spin-margin", "0.5"), "spin margin"),
             (("run", "--device", "stream", "--stream-rate", "0"), "--stream-rate"),
             (("run", "--device", "stream", "--stream-mode", "guess"), "--stream-mode"),

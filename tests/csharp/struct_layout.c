@@ -53,6 +53,9 @@ int main(void) {
   OFFSET(proxMeshInfo, boundsMin);
   OFFSET(proxBodyDef, pose);
   OFFSET(proxBodyDef, referencePoint);
+  OFFSET(proxBodyDef, toolMode);
+  OFFSET(proxBodyDef, couplingAngularDamping);
+  OFFSET(proxBodyDef, internalValue);
   OFFSET(proxContact, pointTool);
   OFFSET(proxContact, distance);
   OFFSET(proxContact, featureOther);

@@ -157,10 +157,16 @@ class World:
 
     # ---- bodies ----
 
-    def create_body(self, mesh, type="static", pose=None, reference_point=None):
+    def create_body(self, mesh, type="static", pose=None, reference_point=None, tool_mode="free",
+                    coupling=None):
         """A body: `mesh` at `pose` ((position, quaternion_wxyz); default the
         identity). `type` is "static", "movable" or "tool"; a tool's torques
-        are taken about `reference_point` (its own frame; default the origin)."""
+        are taken about `reference_point` (its own frame; default the origin).
+        A tool's `tool_mode` is "free" or "constrained" (a proxy that stays
+        outside the other bodies, with the virtual coupling's force;
+        docs/coupling.md); `coupling`, for a constrained tool, is
+        (stiffness N/m, damping N s/m, angular stiffness N m/rad, angular
+        damping N m s/rad), default the library's."""
         if not isinstance(mesh, Mesh):
             raise invalid(f"create_body: mesh must be a proxima.Mesh, not {mesh!r}")
         d = ffi.new("proxBodyDef*", lib.proxDefaultBodyDef())
@@ -171,6 +177,17 @@ class World:
         if reference_point is not None:
             x, y, z = vec3(reference_point, "create_body: reference_point")
             d.referencePoint = {"x": x, "y": y, "z": z}
+        d.toolMode = enum_value("proxToolMode", tool_mode, "create_body: tool_mode")
+        if coupling is not None:
+            try:
+                values = [float(v) for v in coupling]
+            except (TypeError, ValueError):
+                values = []
+            if len(values) != 4:
+                raise invalid("create_body: coupling must be four numbers (stiffness, damping, "
+                              f"angular stiffness, angular damping), not {coupling!r}")
+            (d.couplingStiffness, d.couplingDamping, d.couplingAngularStiffness,
+             d.couplingAngularDamping) = values
         idp = ffi.new("proxBodyId*")
         check(lib.proxWorld_CreateBody(self._idp[0], d, idp))
         key = _key(idp[0])
@@ -437,6 +454,15 @@ class Body:
         out = ffi.new("proxPose*")
         pose_to_c(pose, out[0], "pose")
         check(lib.proxBody_SetPose(self._idp[0], out))
+
+    @property
+    def proxy_pose(self):
+        """Where the tool is rendered and its contacts are computed: a
+        constrained tool's proxy (`pose` is its device pose), a free tool's
+        pose. (position (3,), quaternion_wxyz (4,))."""
+        out = ffi.new("proxPose*")
+        check(lib.proxBody_GetProxyPose(self._idp[0], out))
+        return pose_from_c(out[0])
 
     def contacts(self):
         """The tool's contacts after the last step (while the threads run,

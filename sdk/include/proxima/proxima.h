@@ -236,12 +236,33 @@ typedef enum proxBodyType {
   PROX_BODY_TYPE_FORCE32 = 0x7FFFFFFF
 } proxBodyType;
 
+/* How a tool follows what moves it (docs/coupling.md). */
+typedef enum proxToolMode {
+  /* The tool is where its device (or SetPose) puts it; the force comes from
+   * its LMDs (the paper's distance-to-force curve). The default. */
+  PROX_TOOL_FREE = 0,
+  /* A proxy follows the device but never comes closer to another body than
+   * the safety distance; contacts are the proxy's, and the force is the
+   * virtual coupling, a spring-damper between device pose and proxy. */
+  PROX_TOOL_CONSTRAINED = 1,
+  PROX_TOOL_MODE_FORCE32 = 0x7FFFFFFF
+} proxToolMode;
+
 typedef struct proxBodyDef {
   proxMeshId mesh;
   proxBodyType type;
   proxPose pose;
   /* Tools: the point (in the body's frame) torques are taken about. */
   proxVec3 referencePoint;
+  /* Tools: PROX_TOOL_FREE (default) or PROX_TOOL_CONSTRAINED. */
+  proxToolMode toolMode;
+  /* PROX_TOOL_CONSTRAINED: the coupling between device pose and proxy, at
+   * the tool's reference point: N/m, N s/m, N m/rad, N m s/rad (> 0, the
+   * dampings >= 0; defaults 1000, 2, 1, 0.002). */
+  double couplingStiffness;
+  double couplingDamping;
+  double couplingAngularStiffness;
+  double couplingAngularDamping;
   int32_t internalValue;
 } proxBodyDef;
 
@@ -254,6 +275,12 @@ PROX_API proxResult proxWorld_CreateBody(proxWorldId world, const proxBodyDef* d
 PROX_API proxResult proxBody_Destroy(proxBodyId body);
 PROX_API proxResult proxBody_SetPose(proxBodyId body, const proxPose* pose);
 PROX_API proxResult proxBody_GetPose(proxBodyId body, proxPose* pose);
+/* A tool's proxy: where it is rendered and where its contacts, distances and
+ * intersections are computed. A constrained tool's proxy stays outside the
+ * other bodies while proxBody_GetPose gives its device pose; a free tool's
+ * proxy is its pose. Game thread; while the threads run, local tracking's
+ * latest. */
+PROX_API proxResult proxBody_GetProxyPose(proxBodyId tool, proxPose* pose);
 
 /* ---- stepping and results ---------------------------------------------------- */
 

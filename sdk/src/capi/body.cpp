@@ -14,6 +14,12 @@ proxBodyDef proxDefaultBodyDef(void) {
   proxBodyDef d{};
   d.type = PROX_BODY_STATIC;
   d.pose.rotation.w = 1.0;
+  d.toolMode = PROX_TOOL_FREE;
+  const coupling::CouplingSettings c;
+  d.couplingStiffness = c.linear_stiffness;
+  d.couplingDamping = c.linear_damping;
+  d.couplingAngularStiffness = c.angular_stiffness;
+  d.couplingAngularDamping = c.angular_damping;
   d.internalValue = kDefCookie;
   return d;
 }
@@ -45,7 +51,26 @@ proxResult proxWorld_CreateBody(proxWorldId world, const proxBodyDef* def, proxB
     }
     const Pose pose = to_pose(def->pose, "def->pose");
     const Vec3 reference = to_vec(def->referencePoint, "def->referencePoint");
-    const runtime::Handle h = w.create_body(mesh, type, pose, reference);
+    runtime::ToolSettings tool;
+    switch (enum_value(def->toolMode)) {
+      case PROX_TOOL_FREE:
+        break;
+      case PROX_TOOL_CONSTRAINED:
+        if (type != runtime::BodyType::Tool)
+          fail(PROX_ERROR_INVALID_ARGUMENT,
+               "def->toolMode is PROX_TOOL_CONSTRAINED but def->type is not PROX_BODY_TOOL");
+        tool.mode = coupling::ToolMode::Constrained;
+        need_positive(def->couplingStiffness, "def->couplingStiffness");
+        need_positive(def->couplingAngularStiffness, "def->couplingAngularStiffness");
+        need_non_negative(def->couplingDamping, "def->couplingDamping");
+        need_non_negative(def->couplingAngularDamping, "def->couplingAngularDamping");
+        tool.coupling = {def->couplingStiffness, def->couplingDamping, def->couplingAngularStiffness,
+                         def->couplingAngularDamping};
+        break;
+      default:
+        fail(PROX_ERROR_INVALID_ARGUMENT, "def->toolMode is not a proxToolMode");
+    }
+    const runtime::Handle h = w.create_body(mesh, type, pose, reference, tool);
     *body = {h.index + 1, h.generation, world};
   });
 }
@@ -79,6 +104,15 @@ proxResult proxBody_GetPose(proxBodyId body, proxPose* pose) {
     runtime::World* w = nullptr;
     const runtime::Handle h = body_of(body, w);
     *pose = to_c(w->current_pose(h));
+  });
+}
+
+proxResult proxBody_GetProxyPose(proxBodyId tool, proxPose* pose) {
+  return guard("proxBody_GetProxyPose", [&] {
+    need(pose, "pose");
+    runtime::World* w = nullptr;
+    const runtime::Handle h = tool_of(tool, w);
+    *pose = to_c(w->proxy_pose(h));
   });
 }
 

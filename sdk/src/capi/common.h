@@ -159,6 +159,12 @@ inline void need_positive(double v, const std::string& name) {
   if (!(v > 0.0)) fail(PROX_ERROR_INVALID_ARGUMENT, name + " must be > 0 (it is " + std::to_string(v) + ")");
 }
 
+inline void need_non_negative(double v, const std::string& name) {
+  need_finite(v, name);
+  if (!(v >= 0.0))
+    fail(PROX_ERROR_INVALID_ARGUMENT, name + " must be >= 0 (it is " + std::to_string(v) + ")");
+}
+
 inline Vec3 to_vec(const proxVec3& v, const std::string& name) {
   need_finite(v.x, name + ".x");
   need_finite(v.y, name + ".y");

@@ -92,9 +92,14 @@ Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), 
                    (corner & 4) ? box.max.z : box.min.z);
       tool->radius = std::max(tool->radius, glm::length(p - b.reference_point));
     }
-    const PoseSample start{b.pose, 0.0};
+    const PoseSample start{b.tool.mode == coupling::ToolMode::Constrained ? b.device_pose : b.pose, 0.0};
     tool->pose.store(start);
     tool->game_pose.store(start);
+    tool->constrained = b.tool.mode == coupling::ToolMode::Constrained;
+    tool->coupling = b.tool.coupling;
+    tool->proxy.store({b.pose, 0.0});
+    tool->proxy_state.pose = b.pose;
+    tool->anchor = b.pose;
     tool->wrench.store({b.wrench});
     tool->contacts = b.contacts;
     // The haptic loop's snapshots never grow once the threads run. Clamped
@@ -354,12 +359,26 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
   bool valid = ok && snapshot.sequence > 0;
   if (valid && snapshot_checksum(snapshot) != snapshot.checksum) count(torn_snapshots_), valid = false;
   if (valid && t - snapshot.time > settings_.stale_after) count(stale_ticks_), valid = false;
-  if (valid && pose_displacement(snapshot.tool_pose, sample.pose, tool.reference_local, tool.radius) >
-                   settings_.trust_distance)
+  // A constrained tool's device is meant to be away from its proxy: the
+  // coupling's spring is what tells the hand, so only a free tool's
+  // contacts can be left behind by it.
+  if (valid && !tool.constrained &&
+      pose_displacement(snapshot.tool_pose, sample.pose, tool.reference_local, tool.radius) >
+          settings_.trust_distance)
     count(untrusted_ticks_), valid = false;
-  const Wrench target =
-      valid ? evaluate_contacts(world_.settings_.force, snapshot, sample.pose, tool.reference_local)
-            : Wrench{};
+  Wrench target;
+  if (tool.constrained) {
+    // The spring-damper from the device pose to the proxy the snapshot was
+    // tracked at.
+    const coupling::Twist offset =
+        coupling::twist_between(sample.pose, snapshot.tool_pose, tool.reference_local);
+    const coupling::Twist& rate = tool.offset_rate.update(offset, valid ? dt : 0.0);
+    if (valid)
+      target = coupling::coupling_wrench(tool.coupling, sample.pose, snapshot.tool_pose, tool.reference_local,
+                                         rate);
+  } else if (valid) {
+    target = evaluate_contacts(world_.settings_.force, snapshot, sample.pose, tool.reference_local);
+  }
   bool limited = false;
   const Wrench w = tool.filter.step(target, valid, dt, &limited);
   if (limited) count(limited_ticks_);
@@ -414,9 +433,17 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
         }
     }
     tool.local_pairs = std::move(next);
+    tool.anchor = g.tool_pose;
+    tool.anchored = true;
   }
 
-  const PoseSample sample = tool.pose.load();
+  PoseSample sample = tool.pose.load();
+  // Until the global search has seen the proxy nothing says what is near
+  // it: it waits.
+  if (tool.constrained && tool.anchored) move_proxy(tool, sample);
+  if (tool.constrained) {
+    sample.pose = tool.proxy_state.pose;  // contacts are tracked at the proxy
+  }
   std::size_t total = 0;
   for (LocalPair& lp : tool.local_pairs) {
     const World::BodySlot& other = world_.bodies_[lp.other];
@@ -459,6 +486,35 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
     for (const LmdPair& p : lp.lmds) tool.contacts.push_back({lp.other, p});
 }
 
+void Threads::move_proxy(Tool& tool, const PoseSample& device) {
+  const World::BodySlot& tool_body = world_.bodies_[tool.body];
+  const World::MeshData& tool_mesh = *world_.meshes_[tool_body.mesh].data;
+  coupling::ProxyState& state = tool.proxy_state;
+  // The constraints: the pairs' LMDs, tracked at the proxy at the last
+  // update (or, just adopted, at the global search's pose).
+  state.constraints.clear();
+  tool.obstacles.clear();
+  const Vec3 reference = state.pose.apply(tool.reference_local);
+  coupling::ProxyConstraint c;
+  for (const LocalPair& lp : tool.local_pairs) {
+    for (const LmdPair& p : lp.lmds)
+      if (coupling::make_constraint(p, reference, c)) state.constraints.push_back(c);
+    const World::BodySlot& other = world_.bodies_[lp.other];
+    const World::MeshData& other_mesh = *world_.meshes_[other.mesh].data;
+    tool.obstacles.push_back({&other_mesh.mesh, other_mesh.snch.get(), lp.other_pose});
+  }
+  const coupling::ProxyTool proxy_tool{&tool_mesh.mesh, tool_mesh.snch.get(), tool.reference_local,
+                                       tool.radius};
+  const coupling::ProxySettings settings{world_.settings_.force.safety_distance, world_.settings_.cutoff};
+  coupling::ProxyStats stats;
+  // Bodies beyond the global search's range were farther than the cutoff
+  // from the anchor; the proxy stays close enough to it that they cannot
+  // come within the safety distance.
+  coupling::update_proxy(tool.coupling, settings, proxy_tool, tool.obstacles.data(), tool.obstacles.size(),
+                         device.pose, &tool.anchor, state, stats);
+  tool.proxy.store({state.pose, device.time});
+}
+
 // ---- global search -------------------------------------------------------------
 
 void Threads::global_main() {
@@ -489,13 +545,15 @@ void Threads::global_main() {
     // the pose does, so a still tool costs no search.
     std::vector<BodyPose>& poses = broadphase.poses;
     for (std::size_t k = 0; k < tools_.size(); ++k) {
-      const PoseSample sample = tools_[k]->pose.load();
+      // A constrained tool is searched where its proxy is.
+      const PoseSample sample = tools_[k]->constrained ? tools_[k]->proxy.load() : tools_[k]->pose.load();
       const bool moved = std::memcmp(&sample.pose, &last_tool_pose[k], sizeof(Pose)) != 0;
       if (moved || tool_version[k] == 0) ++tool_version[k], last_tool_pose[k] = sample.pose;
       poses[tools_[k]->body] = {last_tool_pose[k], tool_version[k]};
     }
     StepStats stats;
-    for (auto& tool : tools_) {
+    for (std::size_t k = 0; k < tools_.size(); ++k) {
+      Tool* tool = tools_[k].get();
       const int searched_before = stats.pairs_searched;
       world_.search_tool(tool->body, broadphase, pairs, in_range, stats);
       for (const PairInRange& p : in_range) stats.contacts += static_cast<int>(p.slot->lmds.size());
@@ -505,7 +563,11 @@ void Threads::global_main() {
       bool same_pairs = in_range.size() == tool->published_others.size();
       for (std::size_t i = 0; same_pairs && i < in_range.size(); ++i)
         same_pairs = in_range[i].other == tool->published_others[i];
-      if (stats.pairs_searched == searched_before && same_pairs) continue;
+      // A constrained tool's proxy must also learn that nothing is in range
+      // where it now is (its anchor moves with each result).
+      const bool proxy_moved = tool->constrained && tool->published_version != tool_version[k];
+      if (stats.pairs_searched == searched_before && same_pairs && !proxy_moved) continue;
+      tool->published_version = tool_version[k];
       tool->published_others.clear();
       for (const PairInRange& p : in_range) tool->published_others.push_back(p.other);
       GlobalResult& r = tool->global.back();
@@ -515,6 +577,7 @@ void Threads::global_main() {
         r.pairs[i].other_pose = poses[in_range[i].other].pose;
         r.pairs[i].lmds = in_range[i].slot->lmds;
       }
+      r.tool_pose = poses[tool->body].pose;
       r.sequence = ++sequence;
       tool->global.publish();
     }
@@ -540,6 +603,11 @@ void Threads::set_tool_pose(std::uint32_t body, const Pose& pose) {
 Pose Threads::tool_pose(std::uint32_t body) const {
   const int k = tool_of_body_[body];
   return tools_[std::size_t(k)]->pose.load().pose;
+}
+
+Pose Threads::proxy_pose(std::uint32_t body) const {
+  const Tool& tool = *tools_[std::size_t(tool_of_body_[body])];
+  return tool.constrained ? tool.proxy.load().pose : tool.pose.load().pose;
 }
 
 Wrench Threads::wrench(std::uint32_t body) const {

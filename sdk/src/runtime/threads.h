@@ -104,6 +104,9 @@ class Threads {
   // Game thread.
   void set_tool_pose(std::uint32_t body, const Pose& pose);
   Pose tool_pose(std::uint32_t body) const;
+  // A constrained tool's proxy as local tracking last moved it; a free
+  // tool's pose.
+  Pose proxy_pose(std::uint32_t body) const;
   Wrench wrench(std::uint32_t body) const;
   void contacts(std::uint32_t body, std::vector<Contact>& out) const;
   StepStats step_stats() const;
@@ -143,6 +146,7 @@ class Threads {
   };
   struct GlobalResult {
     std::vector<GlobalPair> pairs;
+    Pose tool_pose;  // searched at
     std::uint64_t sequence = 0;
   };
   struct LocalPair {
@@ -166,6 +170,17 @@ class Threads {
     std::uint64_t published = 0;                  // local's own: snapshots so far
     std::vector<std::uint32_t> published_others;  // global's own: the pairs it last handed over
     std::vector<Contact> contacts;                // local -> game, under results_mutex_
+    // Constrained tools (docs/coupling.md): `pose` is the device's, the
+    // proxy is local tracking's and reaches the haptic loop in the snapshot.
+    bool constrained = false;
+    coupling::CouplingSettings coupling;
+    SeqLock<PoseSample> proxy;                  // local -> global, game
+    coupling::ProxyState proxy_state;           // local's own
+    Pose anchor;                                // local's own: where the adopted global result searched
+    bool anchored = false;                      // local's own: a global result adopted
+    std::uint64_t published_version = 0;        // global's own: the tool pose version last handed over
+    std::vector<coupling::Obstacle> obstacles;  // local's own
+    coupling::OffsetRate offset_rate;           // haptic's own
   };
 
   void haptic_main();
@@ -173,6 +188,8 @@ class Threads {
   void global_main();
   void haptic_tick(Tool& tool, double now, double dt);
   void track(Tool& tool, std::vector<const LmdPair*>& scratch);
+  // A constrained tool's proxy towards the device, on the local thread.
+  void move_proxy(Tool& tool, const PoseSample& device);
   // Sleeps to the next period of `role` (or not at all when back to back);
   // records the iteration's statistics.
   void pace(Role role, double period, double start, double& previous_start, double& deadline);

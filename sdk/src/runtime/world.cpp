@@ -9,6 +9,14 @@
 namespace prox::runtime {
 namespace {
 
+// The coupling's wrench within the maxima, as tool_wrench clips its own.
+Wrench clip_wrench(Wrench w, const ForceSettings& settings) {
+  const double f = glm::length(w.force), t = glm::length(w.torque);
+  if (f > settings.max_force) w.force *= settings.max_force / f, w.clipped = true;
+  if (t > settings.max_torque) w.torque *= settings.max_torque / t, w.clipped = true;
+  return w;
+}
+
 template <typename Slot>
 std::uint32_t free_slot(std::vector<Slot>& slots) {
   for (std::uint32_t i = 0; i < slots.size(); ++i)
@@ -55,7 +63,8 @@ bool World::destroy_mesh(Handle h, Status& status) {
   return true;
 }
 
-Handle World::create_body(Handle mesh, BodyType type, const Pose& pose, const Vec3& reference_point) {
+Handle World::create_body(Handle mesh, BodyType type, const Pose& pose, const Vec3& reference_point,
+                          const ToolSettings& tool) {
   const std::uint32_t i = free_slot(bodies_);
   BodySlot& b = bodies_[i];
   b.generation += 1;
@@ -69,6 +78,19 @@ Handle World::create_body(Handle mesh, BodyType type, const Pose& pose, const Ve
   b.wrench = Wrench{};
   b.device = Device{};
   b.intersection_stats = PolylineStats{};
+  b.tool = type == BodyType::Tool ? tool : ToolSettings{};
+  b.device_pose = pose;
+  b.proxy = coupling::ProxyState{};
+  b.offset_rate.reset();
+  b.searched_pose = pose;
+  b.track_pending = false;
+  b.radius = 0.0;
+  const Aabb& box = meshes_[mesh.index].data->mesh.bounds();
+  for (int corner = 0; corner < 8; ++corner) {
+    const Vec3 p((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                 (corner & 4) ? box.max.z : box.min.z);
+    b.radius = std::max(b.radius, glm::length(p - reference_point));
+  }
   meshes_[mesh.index].users += 1;
   ++scene_version_;
   return {i, b.generation};
@@ -91,6 +113,10 @@ void World::set_pose(Handle h, const Pose& pose) {
   BodySlot& b = bodies_[h.index];
   if (running() && b.type == BodyType::Tool) {
     threads_->set_tool_pose(h.index, pose);  // the haptic loop reads it from there
+    return;
+  }
+  if (constrained(h)) {
+    b.device_pose = pose;  // the proxy follows at the next step
     return;
   }
   std::unique_lock<std::mutex> lock(scene_mutex_, std::defer_lock);
@@ -122,6 +148,11 @@ std::uint32_t World::add_stream_device(std::unique_ptr<StreamDevice> device) {
 
 Pose World::current_pose(Handle h) const {
   if (running() && bodies_[h.index].type == BodyType::Tool) return threads_->tool_pose(h.index);
+  return constrained(h) ? bodies_[h.index].device_pose : bodies_[h.index].pose;
+}
+
+Pose World::proxy_pose(Handle h) const {
+  if (running() && bodies_[h.index].type == BodyType::Tool) return threads_->proxy_pose(h.index);
   return bodies_[h.index].pose;
 }
 
@@ -159,8 +190,13 @@ void World::stop_threads() {
     if (!b.alive || b.type != BodyType::Tool) continue;
     threads_->contacts(i, b.contacts);
     b.wrench = threads_->wrench(i);
-    b.pose = threads_->tool_pose(i);
+    b.device_pose = threads_->tool_pose(i);
+    b.pose = threads_->proxy_pose(i);
     b.pose_version += 1;
+    b.searched_pose = b.pose;
+    b.track_pending = false;
+    b.proxy.clearance = -1.0;  // measured again at the next step
+    b.offset_rate.reset();
   }
   stats_ = threads_->step_stats();
   // The stopped threads' statistics stay readable until the next start.
@@ -278,9 +314,54 @@ void World::prune(PairMap& pairs) {
   }
 }
 
+void World::step_proxy(std::uint32_t t, coupling::ProxyStats& stats) {
+  BodySlot& tool = bodies_[t];
+  const MeshData& tool_mesh = *meshes_[tool.mesh].data;
+  coupling::ProxyState& proxy = tool.proxy;
+  proxy.pose = tool.pose;
+  proxy.constraints.clear();
+  const Vec3 reference = tool.pose.apply(tool.reference_point);
+  coupling::ProxyConstraint constraint;
+  for (const Contact& c : tool.contacts)
+    if (coupling::make_constraint(c.lmd, reference, constraint)) proxy.constraints.push_back(constraint);
+  // Every body a step can reach: a step moves no tool point farther than
+  // the cutoff (update_proxy's limit).
+  std::vector<coupling::Obstacle> obstacles;
+  const Aabb box = world_box(tool_mesh.mesh.bounds(), tool.pose, settings_.cutoff);
+  for (std::uint32_t o = 0; o < bodies_.size(); ++o) {
+    const BodySlot& other = bodies_[o];
+    if (o == t || !other.alive) continue;
+    const MeshData& m = *meshes_[other.mesh].data;
+    if (boxes_overlap(box, world_box(m.mesh.bounds(), other.pose, 0.0)))
+      obstacles.push_back({&m.mesh, m.snch.get(), other.pose});
+  }
+  const coupling::ProxyTool proxy_tool{&tool_mesh.mesh, tool_mesh.snch.get(), tool.reference_point,
+                                       tool.radius};
+  const coupling::ProxySettings settings{settings_.force.safety_distance, settings_.cutoff};
+  coupling::update_proxy(tool.tool.coupling, settings, proxy_tool, obstacles.data(), obstacles.size(),
+                         tool.device_pose, nullptr, proxy, stats);
+  if (!stats.moved) return;
+  tool.pose = proxy.pose;
+  // A new global search once the proxy has moved a quarter of the margin
+  // between cutoff and safety distance from where the last one saw it;
+  // local tracking in between, as the local thread does. The safety check
+  // above does not depend on it: it is exact against every body in reach.
+  const double moved = coupling::twist_displacement(
+      coupling::twist_between(tool.searched_pose, tool.pose, tool.reference_point), tool.radius);
+  if (moved > kResearchFraction * (settings_.cutoff - settings_.force.safety_distance)) {
+    tool.pose_version += 1;
+    tool.searched_pose = tool.pose;
+    tool.track_pending = false;
+  } else {
+    tool.track_pending = true;
+  }
+}
+
 void World::step() {
   const auto start = std::chrono::steady_clock::now();
   stats_ = StepStats{};
+  for (std::uint32_t t = 0; t < bodies_.size(); ++t)
+    if (bodies_[t].alive && constrained({t, bodies_[t].generation})) step_proxy(t, bodies_[t].proxy_stats);
   refresh_poses(broadphase_);
   update_broadphase(broadphase_, scene_version_);
   std::vector<PairInRange> in_range;
@@ -288,6 +369,21 @@ void World::step() {
   for (std::uint32_t t : broadphase_.tools) {
     BodySlot& tool = bodies_[t];
     search_tool(t, broadphase_, pairs_, in_range, stats_);
+    if (tool.track_pending) {
+      // The proxy moved without a new search: the pairs' LMDs follow it.
+      const MeshData& tool_mesh = *meshes_[tool.mesh].data;
+      for (const PairInRange& p : in_range) {
+        PairSlot& pair = pairs_[pair_key(t, p.other)];
+        const MeshData& other_mesh = *meshes_[bodies_[p.other].mesh].data;
+        const PairQuery q{&other_mesh.mesh, other_mesh.snch.get(), broadphase_.poses[p.other].pose,
+                          &tool_mesh.mesh,  tool_mesh.snch.get(),  tool.pose,
+                          settings_.cutoff};
+        LocalTrackingStats local;
+        (settings_.method == Method::Original ? pair.state.original : pair.state.precise)
+            .update(q, pair.lmds, local);
+      }
+      tool.track_pending = false;
+    }
     tool.contacts.clear();
     all.clear();
     for (const PairInRange& p : in_range)
@@ -295,7 +391,16 @@ void World::step() {
         tool.contacts.push_back({p.other, lmd});
         all.push_back(lmd);
       }
-    tool.wrench = tool_wrench(settings_.force, all, tool.pose.apply(tool.reference_point));
+    if (tool.tool.mode == coupling::ToolMode::Constrained) {
+      const coupling::Twist offset =
+          coupling::twist_between(tool.device_pose, tool.pose, tool.reference_point);
+      tool.wrench = clip_wrench(
+          coupling::coupling_wrench(tool.tool.coupling, tool.device_pose, tool.pose, tool.reference_point,
+                                    tool.offset_rate.update(offset, kStepSeconds)),
+          settings_.force);
+    } else {
+      tool.wrench = tool_wrench(settings_.force, all, tool.pose.apply(tool.reference_point));
+    }
     stats_.contacts += static_cast<int>(tool.contacts.size());
   }
   prune(pairs_);
@@ -335,7 +440,11 @@ void World::track() {
         all.push_back(p);
       }
     }
-    tool.wrench = tool_wrench(settings_.force, all, tool.pose.apply(tool.reference_point));
+    tool.wrench = tool.tool.mode == coupling::ToolMode::Constrained
+                      ? clip_wrench(coupling::coupling_wrench(tool.tool.coupling, tool.device_pose, tool.pose,
+                                                              tool.reference_point, tool.offset_rate.rate()),
+                                    settings_.force)
+                      : tool_wrench(settings_.force, all, tool.pose.apply(tool.reference_point));
   }
   track_stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -345,9 +454,10 @@ double World::distance(Handle a_handle, Handle b_handle, double bound) const {
   const BodySlot& b = bodies_[b_handle.index];
   const MeshData& ma = *meshes_[a.mesh].data;
   const MeshData& mb = *meshes_[b.mesh].data;
-  // While the threads run a tool is where its device last put it.
+  // While the threads run a tool is where its device last put it (a
+  // constrained tool: where its proxy is).
   const PairQuery q{
-      &ma.mesh, ma.snch.get(), current_pose(a_handle), &mb.mesh, mb.snch.get(), current_pose(b_handle), 0.0};
+      &ma.mesh, ma.snch.get(), proxy_pose(a_handle), &mb.mesh, mb.snch.get(), proxy_pose(b_handle), 0.0};
   return minimum_distance(q, bound);
 }
 
@@ -355,7 +465,7 @@ void World::intersections(Handle tool_handle, std::vector<std::pair<std::uint32_
   out.clear();
   BodySlot& tool = bodies_[tool_handle.index];
   tool.intersection_stats = PolylineStats{};
-  const Pose tool_pose = current_pose(tool_handle);
+  const Pose tool_pose = proxy_pose(tool_handle);
   const MeshData& tool_mesh = *meshes_[tool.mesh].data;
   const Aabb tool_box = world_box(tool_mesh.mesh.bounds(), tool_pose, 0.0);
   for (std::uint32_t o = 0; o < bodies_.size(); ++o) {

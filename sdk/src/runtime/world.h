@@ -5,6 +5,7 @@
 #include "contact/force.h"
 #include "contact/polylines.h"
 #include "contact/proximity.h"
+#include "coupling/proxy.h"
 #include "runtime/body_tree.h"
 #include "runtime/device.h"
 #include "runtime/scripted_device.h"
@@ -22,6 +23,23 @@ class Threads;
 struct ThreadSettings;
 
 enum class BodyType { Static, Movable, Tool };
+
+// How a tool follows what moves it (docs/coupling.md): Free, the tool is
+// where the device puts it and the force comes from the LMDs (the paper);
+// Constrained, a proxy follows the device but stays outside every other
+// body, and the force is the virtual coupling between the two.
+struct ToolSettings {
+  coupling::ToolMode mode = coupling::ToolMode::Free;
+  coupling::CouplingSettings coupling;
+};
+
+// The deterministic step of a constrained tool is one haptic period for the
+// coupling's dampers.
+inline constexpr double kStepSeconds = 0.001;
+// A constrained tool's step searches globally again once its proxy has
+// moved this share of (cutoff - safety distance) since the last search, and
+// tracks its LMDs in between.
+inline constexpr double kResearchFraction = 0.25;
 
 struct WorldSettings {
   Method method = Method::Precise;
@@ -108,12 +126,17 @@ class World {
   const Snch& snch(Handle h) const { return *meshes_[h.index].data->snch; }
 
   // Bodies.
-  Handle create_body(Handle mesh, BodyType type, const Pose& pose, const Vec3& reference_point);
+  Handle create_body(Handle mesh, BodyType type, const Pose& pose, const Vec3& reference_point,
+                     const ToolSettings& tool = {});
   bool body_alive(Handle h) const;
   void destroy_body(Handle h);
   void set_pose(Handle h, const Pose& pose);
   const Pose& pose(Handle h) const { return bodies_[h.index].pose; }
   BodyType type(Handle h) const { return bodies_[h.index].type; }
+  bool constrained(Handle h) const {
+    return bodies_[h.index].type == BodyType::Tool &&
+           bodies_[h.index].tool.mode == coupling::ToolMode::Constrained;
+  }
   std::uint32_t body_generation(std::uint32_t index) const { return bodies_[index].generation; }
 
   // The deterministic step: every tool against the bodies in range, on the
@@ -124,7 +147,13 @@ class World {
   // to the device, the pose it last read). Game thread.
   void contacts(Handle tool, std::vector<Contact>& out) const;
   Wrench wrench(Handle tool) const;
+  // A body's pose; for a constrained tool, the device's pose (where the
+  // hand is), not the proxy's.
   Pose current_pose(Handle body) const;
+  // Where the body is as rendered and as contacts are computed: its pose,
+  // or a constrained tool's proxy (while the threads run, local tracking's
+  // latest). Distances and intersections are taken here.
+  Pose proxy_pose(Handle body) const;
   StepStats stats() const;
   // Local tracking alone: every tool's contacts from the last step carried
   // to the current poses by the pair's tracker (what the local thread does
@@ -133,6 +162,8 @@ class World {
   // threads run.
   void track();
   const TrackStats& track_stats() const { return track_stats_; }
+  // A constrained tool's last proxy update in step().
+  const coupling::ProxyStats& proxy_stats(Handle tool) const { return bodies_[tool.index].proxy_stats; }
   // The intersection polylines of a tool with every body whose box meets
   // its box, at the current poses; computed on each call. The call's
   // figures are kept with the tool.
@@ -216,12 +247,25 @@ class World {
     Wrench wrench;                     // tools: after the last step
     Device device;                     // tools: what holds it while the threads run
     PolylineStats intersection_stats;  // tools: of the last intersections() call
+    // Tools. For a constrained one `pose` is the proxy (what searches see)
+    // and `device_pose` what set_pose gave.
+    ToolSettings tool;
+    Pose device_pose;
+    coupling::ProxyState proxy;
+    coupling::OffsetRate offset_rate;
+    coupling::ProxyStats proxy_stats;  // of the last step's proxy update
+    Pose searched_pose;                // where the last global search saw the proxy
+    bool track_pending = false;        // the proxy moved since, without a new search
+    double radius = 0.0;               // of the mesh's bounds about the reference point
   };
 
   Aabb world_box(const Aabb& local, const Pose& pose, double margin) const;
   // Copies every body's pose into `bp` when the scene version moved, else
   // only the tools'.
   void refresh_poses(Broadphase& bp) const;
+  // A constrained tool's proxy update in the deterministic step: towards its
+  // device pose, constrained by the last step's contacts.
+  void step_proxy(std::uint32_t tool, coupling::ProxyStats& stats);
 
   WorldSettings settings_;
   std::vector<MeshSlot> meshes_;

@@ -22,6 +22,13 @@ namespace Proxima
             set { Native.Check(Native.proxBody_SetPose(id, ref value)); }
         }
 
+        /// <summary>Where the tool is rendered and its contacts are computed: a constrained
+        /// tool's proxy (Pose is its device pose), a free tool's pose.</summary>
+        public Pose ProxyPose
+        {
+            get { Native.Check(Native.proxBody_GetProxyPose(id, out Pose p)); return p; }
+        }
+
         public void Destroy()
         {
             Native.Check(Native.proxBody_Destroy(id));

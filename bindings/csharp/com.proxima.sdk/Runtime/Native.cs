@@ -69,6 +69,11 @@ namespace Proxima
         public BodyType Type;
         public Pose Pose;
         public Vec3 ReferencePoint;
+        public ToolMode ToolMode;
+        public double CouplingStiffness;
+        public double CouplingDamping;
+        public double CouplingAngularStiffness;
+        public double CouplingAngularDamping;
         public int InternalValue;
     }
 
@@ -166,6 +171,8 @@ namespace Proxima
         internal static extern Result proxBody_SetPose(BodyId body, ref Pose pose);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxBody_GetPose(BodyId body, out Pose pose);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxBody_GetProxyPose(BodyId tool, out Pose pose);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxWorld_Step(WorldId world);

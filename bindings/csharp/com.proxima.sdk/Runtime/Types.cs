@@ -46,7 +46,7 @@ namespace Proxima
         public Version(int major, int minor, int patch) { Major = major; Minor = minor; Patch = patch; }
 
         /// <summary>The C API version this binding was written against.</summary>
-        public static Version Binding => new Version(0, 2, 0);
+        public static Version Binding => new Version(0, 3, 0);
 
         /// <summary>The version of the native library actually loaded.</summary>
         public static Version Library
@@ -146,6 +146,17 @@ namespace Proxima
     public enum ForcePreset { Hard = 0, Soft = 1 }
 
     public enum BodyType { Static = 0, Movable = 1, Tool = 2 }
+
+    /// <summary>How a tool follows what moves it (proxToolMode): Free, where its device puts
+    /// it, with the LMDs' force; Constrained, a proxy that stays outside the other bodies,
+    /// with the virtual coupling's force.</summary>
+    public enum ToolMode { Free = 0, Constrained = 1 }
+
+    /// <summary>The virtual coupling of a constrained tool: N/m, N s/m, N m/rad, N m s/rad.</summary>
+    public struct Coupling
+    {
+        public double Stiffness, Damping, AngularStiffness, AngularDamping;
+    }
 
     /// <summary>A closest feature of a triangle.</summary>
     public enum Feature { Vertex = 0, Edge = 1, Face = 2 }

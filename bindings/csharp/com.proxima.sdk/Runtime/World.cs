@@ -109,6 +109,29 @@ namespace Proxima
             return new Body(body);
         }
 
+        /// <summary>A constrained tool (docs/coupling.md): its proxy follows the device pose
+        /// but never comes closer to another body than the safety distance, and its force is
+        /// the virtual coupling between the two (default coupling when null).</summary>
+        public Body CreateConstrainedTool(Mesh mesh, Pose pose, Vec3 referencePoint = default(Vec3),
+                                          Coupling? coupling = null)
+        {
+            BodyDef def = Native.proxDefaultBodyDef();
+            def.Mesh = mesh.id;
+            def.Type = BodyType.Tool;
+            def.Pose = pose;
+            def.ReferencePoint = referencePoint;
+            def.ToolMode = ToolMode.Constrained;
+            if (coupling.HasValue)
+            {
+                def.CouplingStiffness = coupling.Value.Stiffness;
+                def.CouplingDamping = coupling.Value.Damping;
+                def.CouplingAngularStiffness = coupling.Value.AngularStiffness;
+                def.CouplingAngularDamping = coupling.Value.AngularDamping;
+            }
+            Native.Check(Native.proxWorld_CreateBody(id, ref def, out BodyId body));
+            return new Body(body);
+        }
+
         /// <summary>The deterministic step on this thread: broadphase, global search and
         /// reduction per pair in range, forces. Refused (Busy) while the threads run.</summary>
         public void Step() => Native.Check(Native.proxWorld_Step(id));
