@@ -11,6 +11,8 @@ const glm::vec4 kTorqueColor(0.0f, 0.9f, 1.0f, 1.0f);
 const glm::vec4 kGridColor(0.35f, 0.36f, 0.40f, 1.0f);
 const glm::vec4 kToolColor(0.45f, 0.62f, 0.95f, 1.0f);
 const glm::vec4 kOtherColor(0.80f, 0.78f, 0.72f, 1.0f);
+// The tool's colour, see-through: where the device holds a constrained tool.
+const glm::vec4 kGhostColor(0.45f, 0.62f, 0.95f, 0.3f);
 const glm::vec4 kBackground(0.12f, 0.13f, 0.15f, 1.0f);
 
 void add_segment(std::vector<LinePoint>& out, const glm::dvec3& a, const glm::dvec3& b, float width,

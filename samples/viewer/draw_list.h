@@ -32,7 +32,7 @@ void add_segment(std::vector<LinePoint>& out, const glm::dvec3& a, const glm::dv
 // never have blue; polylines are magenta, the force white, the torque cyan.
 glm::vec4 string_color(double distance, double safety, double cutoff);
 extern const glm::vec4 kPolylineColor, kForceColor, kTorqueColor, kGridColor, kToolColor, kOtherColor,
-    kBackground;
+    kGhostColor, kBackground;
 
 // String widths in pixels: from kStringWidthMin for a contact with no share
 // of the force to kStringWidthMin + kStringWidthGain for one with all of it.

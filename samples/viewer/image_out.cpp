@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 namespace viewer {
 
@@ -82,6 +83,17 @@ void write_sidecar(const std::string& path, const Sidecar& s) {
   j.end_array();
   j.key("force").vec3(s.frame->wrench.force);
   j.key("torque").vec3(s.frame->wrench.torque);
+  // The tool's drawn pose (a constrained tool's proxy) and its device pose.
+  for (const auto& [key, pose] :
+       {std::pair<const char*, const proxPose&>{"tool_pose", s.frame->tool_pose},
+        std::pair<const char*, const proxPose&>{"device_pose", s.frame->device_pose}}) {
+    j.key(key).begin_array();
+    for (const double v : {pose.position.x, pose.position.y, pose.position.z, pose.rotation.w,
+                           pose.rotation.x, pose.rotation.y, pose.rotation.z})
+      j.value(v);
+    j.end_array();
+  }
+  j.field("ghost", s.frame->ghost);
   j.end_object();
   FILE* f = std::fopen(path.c_str(), "w");
   if (!f) throw std::runtime_error(path + ": cannot write");

@@ -139,6 +139,8 @@ class Viewer {
     in.model_a = glm::mat4(frame_.model_a);
     in.model_tool = glm::mat4(frame_.model_tool);
     in.meshes = show_.meshes;
+    in.ghost = show_.ghost && frame_.ghost;
+    in.model_ghost = glm::mat4(frame_.model_ghost);
     in.lines = &lines_;
     in.overlay = std::move(overlay);
     return in;

@@ -24,6 +24,8 @@ const char* const kUsage =
     "preset's)\n"
     "  --method precise|original       the improved method or the Johnson-Cohen baseline (default precise)\n"
     "  --force hard|soft               force settings (docs/cli.md; default hard)\n"
+    "  --tool-mode free|constrained    constrained: the tool (a proxy) stops at the safety distance while\n"
+    "                                  the device goes on, drawn as a see-through ghost (docs/coupling.md)\n"
     "  --device auto|scripted|mouse|gamepad|hid  what drives the tool:\n"
     "                                    scripted: the scripted device along path T (approach, hold,\n"
     "                                    retreat, looped) or along --poses\n"
@@ -44,7 +46,8 @@ const char* const kUsage =
     "  --out DIR                       write DIR/frame-0000.png and frame-0000.json per frame (headless)\n"
     "  --size WxH                      image or window size in pixels (default 1280x720)\n"
     "  --msaa 1|4                      samples per pixel (default 4)\n"
-    "  --show LIST                     comma-separated: meshes,strings,polylines,force,hud,grid, all or\n"
+    "  --show LIST                     comma-separated: meshes,strings,polylines,force,hud,grid,ghost, all "
+    "or\n"
     "                                  none (default all)\n"
     "  --validation                    Vulkan validation layers on; any message is printed and makes\n"
     "                                  the exit status non-zero\n"
@@ -78,7 +81,7 @@ int integer(const std::string& text, const std::string& what, int lo, int hi) {
 }
 
 Show parse_show(const std::string& list) {
-  Show s{false, false, false, false, false, false};
+  Show s{false, false, false, false, false, false, false};
   if (list == "all") return Show{};
   if (list == "none" || list.empty()) return s;
   std::stringstream in(list);
@@ -96,8 +99,10 @@ Show parse_show(const std::string& list) {
       s.hud = true;
     else if (item == "grid")
       s.grid = true;
+    else if (item == "ghost")
+      s.ghost = true;
     else
-      fail("--show: '" + item + "' is not one of meshes, strings, polylines, force, hud, grid");
+      fail("--show: '" + item + "' is not one of meshes, strings, polylines, force, hud, grid, ghost");
   }
   return s;
 }
@@ -177,6 +182,14 @@ Options parse_options(int argc, char** argv, bool* help) {
         o.force = PROX_FORCE_PRESET_SOFT;
       else
         fail("--force: '" + f + "' is not hard or soft");
+    } else if (a == "--tool-mode") {
+      const std::string m = next("--tool-mode value");
+      if (m == "free")
+        o.tool_mode = PROX_TOOL_FREE;
+      else if (m == "constrained")
+        o.tool_mode = PROX_TOOL_CONSTRAINED;
+      else
+        fail("--tool-mode: '" + m + "' is not free or constrained");
     } else if (!a.empty() && a[0] == '-') {
       fail("unknown option '" + a + "'");
     } else {

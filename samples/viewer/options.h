@@ -11,6 +11,7 @@ namespace viewer {
 // What is drawn; --show picks from these names.
 struct Show {
   bool meshes = true, strings = true, polylines = true, force = true, hud = true, grid = true;
+  bool ghost = true;  // a constrained tool's device pose, see-through
 };
 
 // How the tool is driven. `auto` resolves to one of the others (see resolve()).
@@ -33,6 +34,7 @@ struct Options {
   double seconds = 4.0;  // path T: each leg (approach, hold, retreat); --poses: the whole path
   proxMethod method = PROX_METHOD_PRECISE;
   proxForcePreset force = PROX_FORCE_PRESET_HARD;
+  proxToolMode tool_mode = PROX_TOOL_FREE;  // constrained: the tool never sinks in (docs/coupling.md)
 };
 
 // Thrown for a bad command line; main prints it with the usage and exits 2.

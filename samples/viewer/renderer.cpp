@@ -132,6 +132,7 @@ Renderer::~Renderer() {
   }
   vk_.destroy(lines_);
   vkDestroyPipeline(d, mesh_pipeline_, nullptr);
+  vkDestroyPipeline(d, ghost_pipeline_, nullptr);
   vkDestroyPipeline(d, lines_pipeline_, nullptr);
   vkDestroyPipelineLayout(d, mesh_layout_, nullptr);
   vkDestroyPipelineLayout(d, lines_layout_, nullptr);
@@ -218,6 +219,23 @@ void Renderer::create_pipelines() {
   info.layout = mesh_layout_;
   vk_check(vkCreateGraphicsPipelines(d, VK_NULL_HANDLE, 1, &info, nullptr, &mesh_pipeline_),
            "vkCreateGraphicsPipelines (meshes)");
+  // The ghost: blended over everything drawn before it, without the depth
+  // test (where the device went inside a body, the ghost is in there) and
+  // without writing depth, so what it covers stays visible through it.
+  blend_attachment.blendEnable = VK_TRUE;
+  blend_attachment.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+  blend_attachment.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  blend_attachment.colorBlendOp = VK_BLEND_OP_ADD;
+  blend_attachment.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  blend_attachment.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+  blend_attachment.alphaBlendOp = VK_BLEND_OP_ADD;
+  depth.depthTestEnable = VK_FALSE;
+  depth.depthWriteEnable = VK_FALSE;
+  vk_check(vkCreateGraphicsPipelines(d, VK_NULL_HANDLE, 1, &info, nullptr, &ghost_pipeline_),
+           "vkCreateGraphicsPipelines (ghost)");
+  blend_attachment.blendEnable = VK_FALSE;
+  depth.depthTestEnable = VK_TRUE;
+  depth.depthWriteEnable = VK_TRUE;
 
   stages[0].module = lines_vs;
   stages[1].module = lines_fs;
@@ -327,6 +345,10 @@ void Renderer::record(VkCommandBuffer cmd, VkFramebuffer fb, VkExtent2D extent, 
       vkCmdPushConstants(cmd, lines_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
       vkCmdDraw(cmd, 6, static_cast<uint32_t>(screen / 2), 0, static_cast<uint32_t>(world / 2));
     }
+  }
+  if (in.ghost) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ghost_pipeline_);
+    draw_mesh(cmd, same_mesh_ ? mesh_a_ : mesh_tool_, in.view, in.proj, in.model_ghost, kGhostColor);
   }
   if (in.overlay) in.overlay(cmd);
   vkCmdEndRenderPass(cmd);

@@ -1,5 +1,6 @@
 // The renderer: one render pass (MSAA colour resolved into the target's
-// image, depth), the mesh pipeline and the lines pipeline (segments as
+// image, depth), the mesh pipeline (and its blended twin for the ghost) and
+// the lines pipeline (segments as
 // screen-space quads from a storage buffer), and the frame's recording.
 // Independent of where the image goes (targets.h).
 #pragma once
@@ -18,6 +19,10 @@ struct FrameInput {
   glm::mat4 view{1.0f}, proj{1.0f};
   glm::mat4 model_a{1.0f}, model_tool{1.0f};
   bool meshes = true;
+  // The tool's mesh once more, see-through, where the device holds it (a
+  // constrained tool's device pose, when the tool is held back).
+  bool ghost = false;
+  glm::mat4 model_ghost{1.0f};
   const DrawList* lines = nullptr;
   std::function<void(VkCommandBuffer)> overlay;  // recorded last in the render pass (the text HUD)
 };
@@ -62,6 +67,7 @@ class Renderer {
   VkDescriptorSet set_ = VK_NULL_HANDLE;
   VkPipelineLayout mesh_layout_ = VK_NULL_HANDLE, lines_layout_ = VK_NULL_HANDLE;
   VkPipeline mesh_pipeline_ = VK_NULL_HANDLE, lines_pipeline_ = VK_NULL_HANDLE;
+  VkPipeline ghost_pipeline_ = VK_NULL_HANDLE;  // the mesh pipeline, blended, no depth writes
   GpuMesh mesh_a_, mesh_tool_;
   bool same_mesh_ = false;
   Buffer lines_;

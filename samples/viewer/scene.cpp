@@ -85,11 +85,25 @@ void Scene::build(const Options& options, const std::string& path_a, const std::
   body.mesh = mesh_b_;
   body.type = PROX_BODY_TOOL;
   body.pose = options.pose_b;
+  constrained_ = options.tool_mode == PROX_TOOL_CONSTRAINED;
   const glm::dvec3 lo(info_b.boundsMin.x, info_b.boundsMin.y, info_b.boundsMin.z);
   const glm::dvec3 hi(info_b.boundsMax.x, info_b.boundsMax.y, info_b.boundsMax.z);
   reference_local_ = 0.5 * (lo + hi);
   body.referencePoint = {reference_local_.x, reference_local_.y, reference_local_.z};
   check(proxWorld_CreateBody(world_, &body, &tool_));
+  // Puts the tool where its device starts. A constrained tool must start
+  // clear of A (its proxy never moves through it), so it is made there: the
+  // free tool above only serves to find that pose (x_at_gap).
+  auto place = [&](const proxPose& start) {
+    if (!constrained_) {
+      check(proxBody_SetPose(tool_, &start));
+      return;
+    }
+    check(proxBody_Destroy(tool_));
+    body.pose = start;
+    body.toolMode = PROX_TOOL_CONSTRAINED;
+    check(proxWorld_CreateBody(world_, &body, &tool_));
+  };
 
   // The poses the tool visits, for the camera's frame.
   std::vector<proxPose> visited{options.pose_b};
@@ -99,7 +113,7 @@ void Scene::build(const Options& options, const std::string& path_a, const std::
       visited = read_path(options.poses_file);
       const double pace = options.seconds / static_cast<double>(std::max<std::size_t>(2, visited.size()) - 1);
       check(proxWorld_LoadScriptedDevice(world_, options.poses_file.c_str(), pace, 1, &device));
-      check(proxBody_SetPose(tool_, &visited.front()));
+      place(visited.front());
     } else {
       // Path T (docs/cli.md) there and back, from 50 mm apart to 0.5 mm,
       // holding the near end as long as each way takes.
@@ -112,7 +126,7 @@ void Scene::build(const Options& options, const std::string& path_a, const std::
       d.secondsPerPose = options.seconds;
       check(proxWorld_CreateScriptedDevice(world_, &d, &device));
       visited = {ends[0], ends[1]};
-      check(proxBody_SetPose(tool_, &ends[0]));
+      place(ends[0]);
     }
     proxDeviceDef device_def;
     check(proxScriptedDevice_GetDeviceDef(device, &device_def));
@@ -125,6 +139,7 @@ void Scene::build(const Options& options, const std::string& path_a, const std::
     d.mode = PROX_STREAM_INTERPOLATE;
     d.delay = 1.0 / 30.0;
     d.staleAfter = 0.5;
+    place(options.pose_b);
     check(proxWorld_CreateStreamDevice(world_, &d, &stream_));
     check(proxStreamDevice_PushPose(stream_, &options.pose_b, proxGetTime()));
     proxDeviceDef device_def;
@@ -135,7 +150,7 @@ void Scene::build(const Options& options, const std::string& path_a, const std::
     // device's own thread moves the tool from there.
     const proxPose start = options.mesh_a.empty() ? translation(x_at_gap(0.05)) : options.pose_b;
     if (options.mesh_a.empty()) visited = {start, translation(x_at_gap(0.0005))};
-    check(proxBody_SetPose(tool_, &start));
+    place(start);
     hid_ = attach_hid(world_, tool_, start, body.referencePoint);
   }
 
@@ -152,6 +167,7 @@ void Scene::build(const Options& options, const std::string& path_a, const std::
   }
 
   if (options.device_kind == DeviceKind::none) {
+    place(options.pose_b);
     check(proxWorld_Step(world_));  // the tool stays: one deterministic step is the whole answer
   } else {
     const proxThreadsDef threads = proxDefaultThreadsDef();
@@ -186,11 +202,17 @@ double Scene::x_at_gap(double gap) const {
 }
 
 void Scene::update(FrameData& frame, bool polylines) const {
-  proxPose pa, pt;
+  // The tool is drawn, and its contacts were found, at its proxy; a
+  // constrained tool's device pose (GetPose) may be elsewhere.
+  proxPose pa, pt, device;
   check(proxBody_GetPose(a_, &pa));
-  check(proxBody_GetPose(tool_, &pt));
+  check(proxBody_GetProxyPose(tool_, &pt));
+  check(proxBody_GetPose(tool_, &device));
   frame.model_a = matrix(pa);
   frame.model_tool = matrix(pt);
+  frame.tool_pose = pt;
+  frame.device_pose = device;
+  frame.model_ghost = matrix(device);
   frame.reference_point = glm::dvec3(frame.model_tool * glm::dvec4(reference_local_, 1.0));
 
   int32_t count = 0;
@@ -211,6 +233,8 @@ void Scene::update(FrameData& frame, bool polylines) const {
            a.rotation.w == b.rotation.w && a.rotation.x == b.rotation.x && a.rotation.y == b.rotation.y &&
            a.rotation.z == b.rotation.z;
   };
+  frame.ghost = constrained_ && !same(pt, device);
+
   if (!polylines) {
     frame.polylines.clear();
     frame.polylines_valid = false;

@@ -28,8 +28,12 @@ struct Polyline {
 
 // What one frame shows, read from the world in update().
 struct FrameData {
-  glm::dmat4 model_a{1.0}, model_tool{1.0};  // body to world
-  glm::dvec3 reference_point{0.0};           // the tool's, world: where the force is drawn
+  glm::dmat4 model_a{1.0}, model_tool{1.0};  // body to world (the tool: its proxy)
+  // A constrained tool's device pose, when it is not where the proxy is.
+  bool ghost = false;
+  glm::dmat4 model_ghost{1.0};
+  proxPose tool_pose{}, device_pose{};  // the proxy's and the device's
+  glm::dvec3 reference_point{0.0};      // the tool's, world: where the force is drawn
   std::vector<proxContact> contacts;
   std::vector<Polyline> polylines;
   bool polylines_valid = false;  // computed at polylines_pose: kept while the tool stays there
@@ -78,6 +82,7 @@ class Scene {
  private:
   void build(const Options& options, const std::string& path_a, const std::string& path_b);
   double x_at_gap(double gap) const;
+  bool constrained_ = false;
 
   proxWorldId world_{};
   proxBodyId a_{}, tool_{};

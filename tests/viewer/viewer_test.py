@@ -314,6 +314,48 @@ class ViewerGltfTest(unittest.TestCase):
         self.assertEqual([p for p in diff if not inside(p)], [], "pixels drawn outside both boxes' projections")
 
 
+class ViewerConstrainedTest(unittest.TestCase):
+    def test_the_constrained_tool_stays_out_and_its_device_pose_is_a_ghost(self):
+        # The scripted device goes from 0.3 m out to x = 0.1, where the bunnies cross, and holds there;
+        # the constrained tool (its proxy) stops outside A, and the device pose is drawn as a ghost.
+        bunny = os.path.join(ASSETS, "bunny.obj")
+        frames = 150
+        with tempfile.TemporaryDirectory() as d:
+            poses = os.path.join(d, "poses.txt")
+            with open(poses, "w") as f:
+                f.write("0.3 0 0 1 0 0 0\n" + "0.1 0 0 1 0 0 0\n" * 40)
+            last = {}
+            for show in ("meshes,ghost", "meshes"):
+                out = os.path.join(d, show.replace(",", "-"))
+                r = run(bunny, bunny, "--poses", poses, "--seconds", "30", "--tool-mode", "constrained",
+                        "--headless", "--validation", "--frames", str(frames), "--size", f"{SIZE[0]}x{SIZE[1]}",
+                        "--msaa", "1", "--show", show, "--out", out)
+                self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+                self.assertNotRegex(r.stderr, VALIDATION)
+                for i in range(frames):
+                    with open(os.path.join(out, f"frame-{i:04d}.json")) as f:
+                        s = json.load(f)
+                    # The proxy never crosses A: no polyline, no contact closer than half the 0.3 mm
+                    # safety distance of the hard settings.
+                    self.assertEqual(s["polylines"], [], f"frame {i}")
+                    for c in s["contacts"]:
+                        self.assertGreater(c["distance"], 0.00015, f"frame {i}")
+                last[show] = (png.read(os.path.join(out, f"frame-{frames - 1:04d}.png")), s)
+        image, s = last["meshes,ghost"]
+        self.assertEqual(s["device_pose"][0], 0.1, "the device holds inside A by the last frame")
+        self.assertTrue(s["ghost"])
+        self.assertGreater(s["tool_pose"][0], 0.13, "the proxy stopped outside A")
+        # The ghost: the pixels that differ from the frame without it lie where the bunny projects at
+        # the device pose.
+        diff = changed(image, last["meshes"][0])
+        self.assertGreater(len(diff), 500)
+        mask = set()
+        for v in obj_vertices(bunny):
+            x, y, _ = project(s, [v[0] + 0.1, v[1], v[2]])
+            mask |= {(int(x) + dx, int(y) + dy) for dx in range(-2, 3) for dy in range(-2, 3)}
+        self.assertGreaterEqual(len([p for p in diff if p in mask]), 0.97 * len(diff))
+
+
 class ViewerRunTest(unittest.TestCase):
     def test_the_built_in_scene_moves_the_tool_on_the_threads(self):
         with tempfile.TemporaryDirectory() as d:
