@@ -1,11 +1,12 @@
 // The constrained tool on the threads (docs/coupling.md): the scripted
 // device pushes the bunny through the other bunny and back in real time;
 // the game thread samples the proxy as a renderer would. Its own program:
-// it replaces operator new to count allocations on the haptic thread.
+// it counts allocations on the haptic thread (support/marked_threads.h).
 #include "coupling/scenes.h"
 
 #include "coupling/clearance.h"
 #include "runtime/threads.h"
+#include "support/marked_threads.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -16,24 +17,6 @@
 #include <new>
 #include <thread>
 
-namespace {
-thread_local bool t_on_haptic_thread = false;
-std::atomic<long> g_haptic_allocations{0};
-
-void* allocate(std::size_t n) {
-  if (t_on_haptic_thread) g_haptic_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t n) { return allocate(n); }
-void* operator new[](std::size_t n) { return allocate(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-
 namespace prox {
 namespace {
 
@@ -43,7 +26,7 @@ using namespace coupling_scenes;
 struct MarkingDevice {
   runtime::Device inner;
   static bool read(void* user, runtime::DevicePose* pose) {
-    t_on_haptic_thread = true;
+    prox::testing::mark_this_thread(true);
     auto* self = static_cast<MarkingDevice*>(user);
     return self->inner.read_pose(self->inner.user, pose);
   }
@@ -108,7 +91,7 @@ TEST(ConstrainedToolThreads, BunnyThroughAndBackStaysOutside) {
   EXPECT_TRUE(record.finite);
   EXPECT_LE(record.max_force, scene.settings.force.max_force * (1.0 + 1e-12));
   EXPECT_GT(record.max_force, 1.0);  // the coupling pulled the hand back out
-  EXPECT_EQ(g_haptic_allocations.load(), 0) << "the haptic thread allocated";
+  EXPECT_EQ(prox::testing::marked_allocations(), 0) << "the haptic thread allocated";
 }
 
 }  // namespace

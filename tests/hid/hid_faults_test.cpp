@@ -4,57 +4,12 @@
 // two devices at once; closing while the threads run; and that the haptic
 // thread neither allocates nor locks with a HID device attached.
 #include "hid/hid_test_support.h"
+#include "support/marked_threads.h"
 
 #include <atomic>
 #include <cstdlib>
 #include <memory>
 #include <new>
-
-#if !defined(__SANITIZE_THREAD__)
-#include <dlfcn.h>
-#include <pthread.h>
-#endif
-
-// ---- allocations and locks on the haptic thread ------------------------------------
-// As in tests/capi/stream_capi_test.cpp: the recorder marks the haptic
-// thread; allocations and (outside ThreadSanitizer) mutex locks made on a
-// marked thread are counted.
-namespace {
-thread_local bool t_marked = false;
-std::atomic<long> g_marked_allocations{0};
-std::atomic<long> g_marked_locks{0};
-
-void* allocate(std::size_t n) {
-  if (t_marked) g_marked_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t n) { return allocate(n); }
-void* operator new[](std::size_t n) { return allocate(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-
-#if !defined(__SANITIZE_THREAD__)
-namespace {
-using LockFn = int (*)(pthread_mutex_t*);
-// Looked up at the first lock: GLib's constructors lock before this file's
-// static initialisers would run.
-std::atomic<LockFn> g_real_lock{nullptr};
-}  // namespace
-extern "C" int pthread_mutex_lock(pthread_mutex_t* m) {
-  if (t_marked) g_marked_locks.fetch_add(1, std::memory_order_relaxed);
-  LockFn real = g_real_lock.load(std::memory_order_acquire);
-  if (!real) {
-    real = reinterpret_cast<LockFn>(dlsym(RTLD_NEXT, "pthread_mutex_lock"));
-    g_real_lock.store(real, std::memory_order_release);
-  }
-  return real(m);
-}
-#endif
 
 using namespace prox::test;
 
@@ -73,7 +28,7 @@ struct Recorder {
   proxDeviceDef def() {
     proxDeviceDef d = proxDefaultDeviceDef();
     d.readPose = [](void* user, proxPose* pose) -> proxBool {
-      t_marked = true;
+      prox::testing::mark_this_thread(true);
       auto* self = static_cast<Recorder*>(user);
       if (!self->inner.readPose(self->inner.userData, pose)) {
         self->no_pose.fetch_add(1, std::memory_order_relaxed);
@@ -131,15 +86,15 @@ class HidThreads : public HidScene {
   }
   void expect_haptic_thread_clean() {
     EXPECT_GT(recorder.poses.load() + recorder.no_pose.load(), 20);  // it ran
-    EXPECT_EQ(g_marked_allocations.load(), 0) << "the haptic thread allocated";
+    EXPECT_EQ(prox::testing::marked_allocations(), 0) << "the haptic thread allocated";
 #if !defined(__SANITIZE_THREAD__)
-    EXPECT_EQ(g_marked_locks.load(), 0) << "the haptic thread locked a mutex";
+    EXPECT_EQ(prox::testing::marked_locks(), 0) << "the haptic thread locked a mutex";
     // The interposition does see the library's locks: a game-thread call takes some.
-    t_marked = true;
+    prox::testing::mark_this_thread(true);
     stats_of(device);
-    t_marked = false;
-    EXPECT_GT(g_marked_locks.load(), 0);
-    g_marked_locks = 0;
+    prox::testing::mark_this_thread(false);
+    EXPECT_GT(prox::testing::marked_locks(), 0);
+    prox::testing::reset_marked_counts();
 #endif
   }
 
@@ -230,9 +185,9 @@ TEST_F(HidThreads, ADeviceThatStopsAnsweringWritesBlocksNothingElse) {
   ASSERT_OK(proxHidDevice_Close(device));
   EXPECT_LT(proxGetTime() - c0, 0.6);
   ASSERT_OK(proxWorld_StopThreads(world));
-  EXPECT_EQ(g_marked_allocations.load(), 0) << "the haptic thread allocated";
+  EXPECT_EQ(prox::testing::marked_allocations(), 0) << "the haptic thread allocated";
 #if !defined(__SANITIZE_THREAD__)
-  EXPECT_EQ(g_marked_locks.load(), 0) << "the haptic thread locked a mutex";
+  EXPECT_EQ(prox::testing::marked_locks(), 0) << "the haptic thread locked a mutex";
 #endif
 }
 
@@ -367,7 +322,7 @@ TEST_F(HidThreads, ClosedWhileTheThreadsRun) {
   EXPECT_FAILS(proxHidDevice_GetDeviceDef(device, &dd), PROX_ERROR_INVALID_HANDLE, "closed");
   const proxDeviceDef stale = recorder.inner;
   EXPECT_FAILS(proxBody_SetDevice(tool, &stale), PROX_ERROR_INVALID_ARGUMENT, "HID device");
-  EXPECT_EQ(g_marked_allocations.load(), 0);
+  EXPECT_EQ(prox::testing::marked_allocations(), 0);
 }
 
 TEST_F(HidThreads, AnotherWorldsDeviceIsRefusedAndDestroyingTheWorldClosesIt) {

@@ -31,12 +31,18 @@ void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 #if !defined(__SANITIZE_THREAD__)
 namespace {
 using LockFn = int (*)(pthread_mutex_t*);
-// Looked up before main, while no thread is marked.
-const LockFn g_real_lock = reinterpret_cast<LockFn>(dlsym(RTLD_NEXT, "pthread_mutex_lock"));
+// Looked up at the first lock, not by a static initialiser: preloaded
+// libraries (umockdev's GLib) lock before this file's initialisers run.
+std::atomic<LockFn> g_real_lock{nullptr};
 }  // namespace
 extern "C" int pthread_mutex_lock(pthread_mutex_t* m) {
   if (t_marked) g_locks.fetch_add(1, std::memory_order_relaxed);
-  return g_real_lock(m);
+  LockFn real = g_real_lock.load(std::memory_order_acquire);
+  if (!real) {
+    real = reinterpret_cast<LockFn>(dlsym(RTLD_NEXT, "pthread_mutex_lock"));
+    g_real_lock.store(real, std::memory_order_release);
+  }
+  return real(m);
 }
 #endif
 
@@ -46,5 +52,9 @@ void mark_this_thread(bool marked) { t_marked = marked; }
 bool this_thread_marked() { return t_marked; }
 long marked_allocations() { return g_allocations.load(std::memory_order_relaxed); }
 long marked_locks() { return g_locks.load(std::memory_order_relaxed); }
+void reset_marked_counts() {
+  g_allocations.store(0, std::memory_order_relaxed);
+  g_locks.store(0, std::memory_order_relaxed);
+}
 
 }  // namespace prox::testing

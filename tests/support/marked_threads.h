@@ -15,6 +15,9 @@ bool this_thread_marked();
 // Counts since the program started, over every marked thread.
 long marked_allocations();
 long marked_locks();
+// Back to zero (between tests of one program, after checking that the
+// counting sees the library's own calls).
+void reset_marked_counts();
 // Whether mutex locks are counted in this build (not under ThreadSanitizer).
 constexpr bool kCountsLocks =
 #if defined(__SANITIZE_THREAD__)
