@@ -346,14 +346,27 @@ class ViewerConstrainedTest(unittest.TestCase):
         self.assertTrue(s["ghost"])
         self.assertGreater(s["tool_pose"][0], 0.13, "the proxy stopped outside A")
         # The ghost: the pixels that differ from the frame without it lie where the bunny projects at
-        # the device pose.
-        diff = changed(image, last["meshes"][0])
-        self.assertGreater(len(diff), 500)
-        mask = set()
-        for v in obj_vertices(bunny):
-            x, y, _ = project(s, [v[0] + 0.1, v[1], v[2]])
-            mask |= {(int(x) + dx, int(y) + dy) for dx in range(-2, 3) for dy in range(-2, 3)}
-        self.assertGreaterEqual(len([p for p in diff if p in mask]), 0.97 * len(diff))
+        # the device pose. The two runs' proxies may have slid to slightly different places: their
+        # pixels are left out.
+        verts = obj_vertices(bunny)
+
+        def footprint(pose):
+            w, x, y, z = pose[3:]
+            rot = [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                   [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                   [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
+            mask = set()
+            for v in verts:
+                p = [sum(rot[r][c] * v[c] for c in range(3)) + pose[r] for r in range(3)]
+                px, py, _ = project(s, p)
+                mask |= {(int(px) + dx, int(py) + dy) for dx in range(-2, 3) for dy in range(-2, 3)}
+            return mask
+
+        ghost = footprint(s["device_pose"])
+        proxies = footprint(s["tool_pose"]) | footprint(last["meshes"][1]["tool_pose"])
+        diff = [p for p in changed(image, last["meshes"][0]) if p not in proxies]
+        self.assertGreater(len(diff), 150, "no ghost beside the proxy")
+        self.assertGreaterEqual(len([p for p in diff if p in ghost]), 0.97 * len(diff))
 
 
 class ViewerRunTest(unittest.TestCase):
