@@ -45,6 +45,8 @@ int main(void) {
   SIZE(proxSearchStats);
   SIZE(proxTrackStats);
   SIZE(proxIntersectionStats);
+  SIZE(proxPatchSettings);
+  SIZE(proxPatchStats);
   OFFSET(proxForceSettings, maxForce);
   OFFSET(proxWorldDef, cutoff);
   OFFSET(proxWorldDef, internalValue);
@@ -78,5 +80,6 @@ int main(void) {
   OFFSET(proxMeshStats, hierarchyBytes);
   OFFSET(proxSearchStats, nodePairs);
   OFFSET(proxTrackStats, distanceEvaluations);
+  OFFSET(proxPatchStats, intersectingPairs);
   return 0;
 }

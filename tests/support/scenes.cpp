@@ -39,6 +39,23 @@ std::shared_ptr<const Model> load_obj_model(const std::string& relative) {
   return model_from_arrays(obj.positions, obj.indices);
 }
 
+std::shared_ptr<const Model> square_sheet(int n, double side, bool facing_down) {
+  std::vector<double> positions;
+  std::vector<std::uint32_t> indices;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) positions.insert(positions.end(), {side * i / n, side * j / n, 0.0});
+  const auto row = static_cast<std::uint32_t>(n + 1);
+  for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(n); ++j)
+    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i) {
+      const std::uint32_t a = j * row + i, b = a + 1, c = a + row, d = c + 1;
+      if (facing_down)
+        indices.insert(indices.end(), {a, d, b, a, c, d});
+      else
+        indices.insert(indices.end(), {a, b, d, a, d, c});
+    }
+  return model_from_arrays(positions, indices);
+}
+
 std::shared_ptr<const Model> load_gltf_model(const std::string& relative, int part) {
 #if PROX_WITH_GLTF
   std::vector<io::GltfMesh> meshes;

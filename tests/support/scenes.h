@@ -32,6 +32,11 @@ std::shared_ptr<const Model> load_gltf_model(const std::string& relative, int pa
 std::shared_ptr<const Model> model_from_arrays(const std::vector<double>& positions,
                                                const std::vector<std::uint32_t>& indices);
 
+// A flat square of side `side` in the z = 0 plane from (0, 0), n x n cells
+// of two triangles each, facing +z (or -z when `facing_down`): half of the
+// flat-field case of docs/patches.md.
+std::shared_ptr<const Model> square_sheet(int n, double side, bool facing_down);
+
 // A random relative pose of b near a: b rotated about its centre by a random
 // rotation and moved along a random direction until the exact minimum
 // distance between the meshes is `gap` (bisection on the distance; the

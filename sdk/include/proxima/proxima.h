@@ -351,6 +351,39 @@ typedef struct proxWorldStats {
 /* Game thread. */
 PROX_API proxResult proxWorld_GetStats(proxWorldId world, proxWorldStats* stats);
 
+/* Patches (docs/patches.md): after the reduction, LMDs whose closest points
+ * on the tool lie within a radius of the closest one's and whose directions
+ * agree within an angle merge into one contact, the closest, which weighs
+ * the patch's count in the force. */
+typedef struct proxPatchSettings {
+  double radiusOverCutoff; /* the radius as a share of the world's cutoff, finite, >= 0; 0: no merging */
+  double maxAngleDegrees;  /* in [0, 180] */
+} proxPatchSettings;
+
+/* The world's patch rule (the default: radius = the cutoff, 5 degrees). Game thread. */
+PROX_API proxResult proxWorld_GetPatchSettings(proxWorldId world, proxPatchSettings* settings);
+/* Changes it from the next proxWorld_Step on (PROX_ERROR_BUSY while the
+ * threads run). Game thread. */
+PROX_API proxResult proxWorld_SetPatchSettings(proxWorldId world, const proxPatchSettings* settings);
+
+typedef struct proxPatchStats {
+  /* Over the pairs searched in the last step (while the threads run: the
+   * global thread's last search): */
+  int32_t lmds;         /* LMDs after the reduction, before merging */
+  int32_t patches;      /* contacts kept: one per patch */
+  int32_t merged;       /* lmds - patches: LMDs folded into a closer one's patch */
+  int32_t largestPatch; /* LMDs in the largest patch */
+  /* Triangle pairs the global searches found crossing: an intersection of
+   * the two bodies, reported here and never as contacts
+   * (proxBody_GetIntersections traces it). */
+  uint64_t intersectingPairs;
+  int32_t intersectingBodies; /* pairs searched with any */
+  int32_t reserved;
+} proxPatchStats;
+
+/* Game thread. */
+PROX_API proxResult proxWorld_GetPatchStats(proxWorldId world, proxPatchStats* stats);
+
 /* ---- devices ---------------------------------------------------------------- */
 
 /* A haptic device: two callbacks and your pointer, called from the haptic

@@ -37,8 +37,9 @@ double force_magnitude(const ForceSettings& s, double distance) {
   return s.max_force * std::max(0.0, (e - tail) / (1.0 - tail));
 }
 
-void WrenchSum::add(const ForceSettings& s, const Vec3& point_b, const Vec3& direction, double distance) {
-  const Vec3 f = force_magnitude(s, distance) * direction;
+void WrenchSum::add(const ForceSettings& s, const Vec3& point_b, const Vec3& direction, double distance,
+                    double weight) {
+  const Vec3 f = (weight * force_magnitude(s, distance)) * direction;
   force_ += f;
   torque_ += glm::cross(point_b - reference_point_, f);
 }
@@ -63,7 +64,7 @@ Wrench tool_wrench(const ForceSettings& s, const std::vector<LmdPair>& lmds, con
     const Vec3 d = p.point_b - p.point_a;
     const double len = glm::length(d);
     if (!(len > 0.0)) continue;  // touching: no direction (intersections are not LMDs)
-    sum.add(s, p.point_b, d / len, p.distance);
+    sum.add(s, p.point_b, d / len, p.distance, p.patch_count);
   }
   return sum.finish(s);
 }

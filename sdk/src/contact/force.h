@@ -45,8 +45,10 @@ class WrenchSum {
  public:
   explicit WrenchSum(const Vec3& reference_point) : reference_point_(reference_point) {}
   // One contact: its point on the tool, the unit direction the force pushes
-  // the tool in, and the distance the force magnitude is taken at.
-  void add(const ForceSettings& settings, const Vec3& point_b, const Vec3& direction, double distance);
+  // the tool in, the distance the force magnitude is taken at, and how many
+  // contacts it stands for (a patch's count, contact/patches.h).
+  void add(const ForceSettings& settings, const Vec3& point_b, const Vec3& direction, double distance,
+           double weight = 1.0);
   // The sum, clipped as tool_wrench describes.
   Wrench finish(const ForceSettings& settings) const;
 
@@ -56,7 +58,8 @@ class WrenchSum {
 };
 
 // The force and torque on mesh B (the held tool) from its LMD pairs with A:
-// each pair pushes B away from A along point_b - point_a; the forces are
+// each pair pushes B away from A along point_b - point_a, weighing its
+// patch_count (a patch's seed stands for its members); the forces are
 // summed and the sum clipped to max_force (which keeps many parallel LMDs
 // from adding up to a spike; the torque is scaled alike), the torque taken
 // about `reference_point` (world) and clipped to max_torque.

@@ -100,7 +100,11 @@ void global_search_precise(const PairQuery& q, std::vector<LmdPair>& out, Global
     }
     ++stats.distance_evaluations;
     const geometry::TriangleDistance d = geometry::triangle_distance(a, b);
-    if (d.intersects || d.distance > q.cutoff) return;
+    if (d.intersects) {
+      ++stats.intersecting_pairs;
+      return;
+    }
+    if (d.distance > q.cutoff) return;
     ++stats.candidates;
     out.push_back(make_pair(q, ta, tb, d.point_a, d.point_b, d.distance, d.feature_a, d.feature_b));
   });

@@ -21,6 +21,9 @@ struct GlobalSearchStats {
   std::uint64_t normal_rejections = 0;     // original: culled by the G5 normal check
   std::uint64_t distance_evaluations = 0;  // exact distances (precise) or 7x7 samplings (original)
   std::uint64_t candidates = 0;            // pairs output, before any reduction
+  // precise: pairs whose exact distance found them crossing; they are an
+  // intersection of the two bodies, not contacts, and are not output
+  std::uint64_t intersecting_pairs = 0;
   double seconds = 0.0;
 
   GlobalSearchStats& operator+=(const GlobalSearchStats& s) {
@@ -29,6 +32,7 @@ struct GlobalSearchStats {
         visibility_rejections += s.visibility_rejections;
     plane_rejections += s.plane_rejections, normal_rejections += s.normal_rejections;
     distance_evaluations += s.distance_evaluations, candidates += s.candidates, seconds += s.seconds;
+    intersecting_pairs += s.intersecting_pairs;
     return *this;
   }
 };

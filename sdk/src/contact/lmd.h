@@ -37,6 +37,20 @@ struct LmdPair {
   double distance = 0.0;            // |point_b - point_a|, mesh units
   Feature feature_a, feature_b;     // on tri_a and tri_b
   MeshFeature mesh_feature_a, mesh_feature_b;
+  // The patch this LMD represents (contact/patches.h): how many LMDs it
+  // stands for (itself included), the farthest of their closest points on B
+  // from its own, how much farther the farthest of them is than it, and the
+  // largest angle between their directions and its own (radians).
+  std::uint32_t patch_count = 1;
+  double patch_extent = 0.0, patch_spread = 0.0, patch_angle = 0.0;
+};
+
+// The patch rule (contact/patches.h, docs/patches.md). The radius is a share of the query's cutoff, so one
+// setting fits models of any scale; 0 turns merging off.
+struct PatchSettings {
+  double radius_over_cutoff = 1.0;
+  double max_angle_degrees = 5.0;
+  bool enabled() const { return radius_over_cutoff > 0.0; }
 };
 
 // Two meshes, each with its hierarchy and world pose, and the cutoff beyond
@@ -55,6 +69,8 @@ struct PairQuery {
   enum class Visibility { Sound, Paper, Off } visibility = Visibility::Sound;
   // The normal-cone tests G2/G3 (switch off only to measure them).
   bool use_cones = true;
+  // How find_lmds merges the precise and reference LMDs into patches.
+  PatchSettings patches = PatchSettings{};
 };
 
 }  // namespace prox

@@ -45,7 +45,8 @@ void LocalTracker::rehash(std::size_t slots) {
   for (std::uint32_t i = 0; i < entries_.size(); ++i) insert(entries_[i].key, i);
 }
 
-void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalTrackingStats& stats, bool known) {
+void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalTrackingStats& stats,
+                          bool known) {
   const auto start = std::chrono::steady_clock::now();
   // The cache lives for one update (the poses change between updates).
   entries_.clear();
@@ -186,6 +187,11 @@ void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalT
     out.feature_b = r.feature_b;
     out.mesh_feature_a = mesh_feature(ma, ta, r.feature_a);
     out.mesh_feature_b = mesh_feature(mb, tb, r.feature_b);
+    // A patch's seed keeps standing for its patch until the next search.
+    out.patch_count = lmds[k].patch_count;
+    out.patch_extent = lmds[k].patch_extent;
+    out.patch_spread = lmds[k].patch_spread;
+    out.patch_angle = lmds[k].patch_angle;
     next_.push_back(out);
   }
   // Two pairs on the same mesh features are one LMD.

@@ -25,6 +25,7 @@ void find_lmds(const PairQuery& query, Method method, PairState& state, Proximit
       result.candidates = static_cast<std::uint32_t>(result.lmds.size());
       state.precise.update(query, result.lmds, result.reduction[0], /*known=*/true);
       state.precise.update(later_pose ? *later_pose : query, result.lmds, result.reduction[1]);
+      state.patches.merge(later_pose ? *later_pose : query, query.patches, result.lmds, result.patches);
       break;
     case Method::Original:
       // The baseline has no tracking in the global thread; its local thread's
@@ -36,6 +37,7 @@ void find_lmds(const PairQuery& query, Method method, PairState& state, Proximit
     case Method::Reference:
       reference_lmds(query, result.lmds);
       result.candidates = static_cast<std::uint32_t>(result.lmds.size());
+      state.patches.merge(query, query.patches, result.lmds, result.patches);
       break;
   }
   for (const LmdPair& p : result.lmds)

@@ -4,6 +4,7 @@
 
 #include "contact/global_search.h"
 #include "contact/local_tracking.h"
+#include "contact/patches.h"
 
 #include <vector>
 
@@ -24,6 +25,9 @@ struct ProximityResult {
   // (paper section 4.3): the first reduces the candidates, the second brings
   // them to the latest pose.
   LocalTrackingStats reduction[2];
+  // The precise and reference LMDs merged into patches (query.patches):
+  // lmds holds the seeds; patches.lmds_in is how many LMDs there were.
+  PatchStats patches;
   std::uint32_t candidates = 0;  // before reduction
   double min_distance = -1.0;    // over lmds; -1 when there are none
 };
@@ -33,10 +37,13 @@ struct ProximityResult {
 struct PairState {
   LocalTracker precise;
   LocalTracker original = LocalTracker::original();
+  PatchMerger patches;
 };
 
 // Runs `method` for the query's poses. `later_pose` lets the last tracking
 // pass see where B has moved meanwhile (nullptr: stay at the query's pose).
+// The precise LMDs after their reduction, and the reference's, are merged
+// into patches by query.patches (the baseline's are left as they are).
 void find_lmds(const PairQuery& query, Method method, PairState& state, ProximityResult& result,
                const PairQuery* later_pose = nullptr);
 

@@ -37,7 +37,8 @@ bool to_haptic_contact(const LmdPair& lmd, const Pose& tool_to_local, HapticCont
   const Vec3 d = lmd.point_b - lmd.point_a;
   const double len = glm::length(d);
   if (!(len > 0.0)) return false;
-  out = {tool_to_local.apply(lmd.point_b), lmd.point_a, d / len, lmd.distance};
+  out = {tool_to_local.apply(lmd.point_b), lmd.point_a, d / len, lmd.distance,
+         static_cast<double>(lmd.patch_count)};
   return true;
 }
 
@@ -61,7 +62,7 @@ Wrench evaluate_contacts(const ForceSettings& settings, const ContactSnapshot& s
     // Closer than zero along the normal means the hand has pushed through
     // the tangent plane since tracking: full force, never a negative one.
     const double d = std::max(0.0, glm::dot(b - c.other_point, c.normal));
-    sum.add(settings, b, c.normal, d);
+    sum.add(settings, b, c.normal, d, c.weight);
   }
   return sum.finish(settings);
 }

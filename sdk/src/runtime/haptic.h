@@ -20,6 +20,7 @@ struct HapticContact {
   Vec3 other_point{0.0};
   Vec3 normal{0.0, 0.0, 1.0};  // unit, from the other body to the tool
   double distance = 0.0;       // when tracked
+  double weight = 1.0;         // the LMDs it stands for: its patch's count
 };
 
 // An LMD pair (A the other body, B the tool) as the haptic loop keeps it;

@@ -414,7 +414,11 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
   const Method method = world_.settings_.method;
 
   // A new global result replaces the set of pairs; each pair's tracked LMDs
-  // join the global ones (the tracker's cache drops the duplicates).
+  // join the global ones (the tracker's cache drops the duplicates). Patches
+  // are the exception: a tracked seed and a new one may stand for the same
+  // LMDs from two different minima of a flat field, and both would count
+  // them; the new patches replace the tracked ones.
+  const bool join_tracked = method == Method::Original || !world_.settings_.patches.enabled();
   if (tool.global.update()) {
     const GlobalResult& g = tool.global.front();
     std::vector<LocalPair> next(g.pairs.size());
@@ -428,7 +432,7 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
       for (LocalPair& old : tool.local_pairs)
         if (old.other == gp.other) {
           lp.tracker = std::move(old.tracker);
-          lp.lmds.insert(lp.lmds.end(), old.lmds.begin(), old.lmds.end());
+          if (join_tracked) lp.lmds.insert(lp.lmds.end(), old.lmds.begin(), old.lmds.end());
           break;
         }
     }

@@ -282,9 +282,10 @@ void World::search_tool(std::uint32_t t, Broadphase& bp, PairMap& pairs, std::ve
     pair.seen = true;
     // An unchanged pose pair has the same answer: skip the search.
     if (pair.tool_version != poses[t].version || pair.body_version != poses[o].version) {
-      const PairQuery q{&other_mesh.mesh, other_mesh.snch.get(), poses[o].pose,
-                        &tool_mesh.mesh,  tool_mesh.snch.get(),  tool_pose,
-                        settings_.cutoff};
+      PairQuery q{&other_mesh.mesh, other_mesh.snch.get(), poses[o].pose,
+                  &tool_mesh.mesh,  tool_mesh.snch.get(),  tool_pose,
+                  settings_.cutoff};
+      q.patches = settings_.patches;
       ProximityResult r;
       find_lmds(q, settings_.method, pair.state, r);
       pair.lmds = std::move(r.lmds);
@@ -293,6 +294,8 @@ void World::search_tool(std::uint32_t t, Broadphase& bp, PairMap& pairs, std::ve
       ++stats.pairs_searched;
       stats.candidates += r.candidates;
       stats.search += r.global;
+      stats.patches += r.patches;
+      if (r.global.intersecting_pairs > 0) ++stats.intersecting_bodies;
       for (const LocalTrackingStats& pass : r.reduction) {
         stats.reduction_seconds += pass.seconds;
         stats.reduction_cache_hits += pass.cache_hits;

@@ -45,6 +45,7 @@ struct WorldSettings {
   Method method = Method::Precise;
   double cutoff = 0.005;
   ForceSettings force = hard_force_settings();  // its cutoff is kept equal to `cutoff`
+  PatchSettings patches;                        // how LMDs merge into patches (docs/patches.md)
 };
 
 // A slot index and the generation it had when the object was created.
@@ -69,6 +70,11 @@ struct StepStats {
   GlobalSearchStats search;
   double reduction_seconds = 0.0;
   std::uint64_t reduction_cache_hits = 0;
+  // The reduced LMDs merged into patches, over the pairs searched; the
+  // crossing pairs are in search.intersecting_pairs, and the pairs searched
+  // that had any in intersecting_bodies.
+  PatchStats patches;
+  int intersecting_bodies = 0;
 };
 
 // What the last track() did, summed over the pairs tracked.
@@ -161,6 +167,12 @@ class World {
   // step did not keep are not tracked; no new pair is found. Not while the
   // threads run.
   void track();
+  // The patch rule from the next step on; the pairs' cached results, merged
+  // by the old rule, are dropped. Not while the threads run.
+  void set_patches(const PatchSettings& patches) {
+    settings_.patches = patches;
+    pairs_.clear();
+  }
   const TrackStats& track_stats() const { return track_stats_; }
   // A constrained tool's last proxy update in step().
   const coupling::ProxyStats& proxy_stats(Handle tool) const { return bodies_[tool.index].proxy_stats; }
