@@ -10,6 +10,8 @@ int lmd(Args& args) {
   proxMethod method = PROX_METHOD_PRECISE;
   Settings settings = preset(PROX_FORCE_PRESET_HARD);
   std::string json_path;
+  proxPatchSettings patches{0.0, 0.0};
+  bool radius_given = false, angle_given = false;  // else the world's default
   while (!args.empty()) {
     const std::string opt = args.next("option");
     if (opt == "--pose-a")
@@ -22,6 +24,12 @@ int lmd(Args& args) {
       method = parse_method(args.next("--method value"));
     else if (opt == "--force")
       settings = parse_force(args.next("--force value"));
+    else if (opt == "--patch-radius")
+      patches.radiusOverCutoff = parse_number(args.next("--patch-radius value"), "--patch-radius"),
+      radius_given = true;
+    else if (opt == "--patch-angle")
+      patches.maxAngleDegrees = parse_number(args.next("--patch-angle value"), "--patch-angle"),
+      angle_given = true;
     else if (opt == "--json")
       json_path = args.next("--json file");
     else
@@ -34,11 +42,18 @@ int lmd(Args& args) {
   cutoff = settings.cutoff;
   settings.method = method;
   const Scene scene(settings, path_a, path_b, pose_a, pose_b);
+  proxPatchSettings rule;
+  check(proxWorld_GetPatchSettings(scene.world(), &rule));
+  if (radius_given) rule.radiusOverCutoff = patches.radiusOverCutoff;
+  if (angle_given) rule.maxAngleDegrees = patches.maxAngleDegrees;
+  check(proxWorld_SetPatchSettings(scene.world(), &rule));
   check(proxWorld_Step(scene.world()));
   const std::vector<proxContact> contacts = scene.contacts();
   const proxWrench w = scene.wrench();
   proxSearchStats r;
   check(proxWorld_GetSearchStats(scene.world(), &r));
+  proxPatchStats ps;
+  check(proxWorld_GetPatchStats(scene.world(), &ps));
   const double min_d = min_distance(contacts);
 
   std::printf("%s LMDs between %s and %s within %g: %zu (from %llu candidates)\n", method_name(method),
@@ -62,6 +77,14 @@ int lmd(Args& args) {
       static_cast<unsigned long long>(r.nodePairs), static_cast<unsigned long long>(r.leafPairs),
       static_cast<unsigned long long>(r.visibilityRejections), r.globalSeconds * 1e3,
       r.reductionSeconds * 1e3);
+  std::printf(
+      "  patches: %d LMDs merged into %d (%d merged, the largest of %d) within %g x the cutoff and %g deg\n",
+      ps.lmds, ps.patches, ps.merged, ps.largestPatch, rule.radiusOverCutoff, rule.maxAngleDegrees);
+  if (ps.intersectingPairs > 0)
+    std::printf("  intersection: the surfaces cross (%llu triangle pairs; not contacts)\n",
+                static_cast<unsigned long long>(ps.intersectingPairs));
+  else
+    std::printf("  intersection: none found\n");
 
   if (!json_path.empty()) {
     auto count = [](uint64_t n) { return static_cast<long long>(n); };
@@ -97,6 +120,18 @@ int lmd(Args& args) {
     j.key("global_ms").value(r.globalSeconds * 1e3);
     j.key("reduction_ms").value(r.reductionSeconds * 1e3);
     j.key("tracking_cache_hits").value(count(r.reductionCacheHits));
+    j.end_object();
+    j.key("patches").begin_object();
+    j.key("lmds").value(static_cast<long long>(ps.lmds));
+    j.key("patches").value(static_cast<long long>(ps.patches));
+    j.key("merged").value(static_cast<long long>(ps.merged));
+    j.key("largest").value(static_cast<long long>(ps.largestPatch));
+    j.key("radius_over_cutoff").value(rule.radiusOverCutoff);
+    j.key("max_angle_degrees").value(rule.maxAngleDegrees);
+    j.end_object();
+    j.key("intersection").begin_object();
+    j.key("crossing").value(ps.intersectingPairs > 0);
+    j.key("intersecting_pairs").value(count(ps.intersectingPairs));
     j.end_object();
     j.end_object();
     write_file(json_path, j.str() + "\n");
