@@ -10,8 +10,8 @@ int lmd(Args& args) {
   proxMethod method = PROX_METHOD_PRECISE;
   Settings settings = preset(PROX_FORCE_PRESET_HARD);
   std::string json_path;
-  proxPatchSettings patches{0.0, 0.0};
-  bool radius_given = false, angle_given = false;  // else the world's default
+  proxPatchSettings patches{0.0, 0.0, 0.0};
+  bool radius_given = false, angle_given = false, spread_given = false;  // else the world's default
   while (!args.empty()) {
     const std::string opt = args.next("option");
     if (opt == "--pose-a")
@@ -30,6 +30,9 @@ int lmd(Args& args) {
     else if (opt == "--patch-angle")
       patches.maxAngleDegrees = parse_number(args.next("--patch-angle value"), "--patch-angle"),
       angle_given = true;
+    else if (opt == "--patch-spread")
+      patches.maxSpreadOverCutoff = parse_number(args.next("--patch-spread value"), "--patch-spread"),
+      spread_given = true;
     else if (opt == "--json")
       json_path = args.next("--json file");
     else
@@ -46,6 +49,7 @@ int lmd(Args& args) {
   check(proxWorld_GetPatchSettings(scene.world(), &rule));
   if (radius_given) rule.radiusOverCutoff = patches.radiusOverCutoff;
   if (angle_given) rule.maxAngleDegrees = patches.maxAngleDegrees;
+  if (spread_given) rule.maxSpreadOverCutoff = patches.maxSpreadOverCutoff;
   check(proxWorld_SetPatchSettings(scene.world(), &rule));
   check(proxWorld_Step(scene.world()));
   const std::vector<proxContact> contacts = scene.contacts();
@@ -78,8 +82,10 @@ int lmd(Args& args) {
       static_cast<unsigned long long>(r.visibilityRejections), r.globalSeconds * 1e3,
       r.reductionSeconds * 1e3);
   std::printf(
-      "  patches: %d LMDs merged into %d (%d merged, the largest of %d) within %g x the cutoff and %g deg\n",
-      ps.lmds, ps.patches, ps.merged, ps.largestPatch, rule.radiusOverCutoff, rule.maxAngleDegrees);
+      "  patches: %d LMDs merged into %d (%d merged, the largest of %d) within %g x the cutoff, %g deg and "
+      "%g x the cutoff farther\n",
+      ps.lmds, ps.patches, ps.merged, ps.largestPatch, rule.radiusOverCutoff, rule.maxAngleDegrees,
+      rule.maxSpreadOverCutoff);
   if (ps.intersectingPairs > 0)
     std::printf("  intersection: the surfaces cross (%llu triangle pairs; not contacts)\n",
                 static_cast<unsigned long long>(ps.intersectingPairs));
@@ -128,6 +134,7 @@ int lmd(Args& args) {
     j.key("largest").value(static_cast<long long>(ps.largestPatch));
     j.key("radius_over_cutoff").value(rule.radiusOverCutoff);
     j.key("max_angle_degrees").value(rule.maxAngleDegrees);
+    j.key("max_spread_over_cutoff").value(rule.maxSpreadOverCutoff);
     j.end_object();
     j.key("intersection").begin_object();
     j.key("crossing").value(ps.intersectingPairs > 0);

@@ -25,7 +25,7 @@ const char* kUsage =
     "  proxima info FILE\n"
     "  proxima lmd A B [--pose-a tx ty tz qw qx qy qz] [--pose-b tx ty tz qw qx qy qz]\n"
     "                  [--cutoff D] [--method precise|original|reference] [--force hard|soft]\n"
-    "                  [--patch-radius R] [--patch-angle DEG] [--json FILE]\n"
+    "                  [--patch-radius R] [--patch-angle DEG] [--patch-spread S] [--json FILE]\n"
     "  proxima polylines A B [--pose-a tx ty tz qw qx qy qz] [--pose-b ...] [--json FILE]\n"
     "  proxima path [A B] [--poses FILE | --steps N] [--method precise|original|both] [--force hard|soft]\n"
     "               [--csv FILE]\n"

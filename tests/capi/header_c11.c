@@ -32,7 +32,7 @@ _Static_assert(sizeof(proxMeshStats) == 48, "proxMeshStats");
 _Static_assert(sizeof(proxSearchStats) == 88, "proxSearchStats");
 _Static_assert(sizeof(proxTrackStats) == 48, "proxTrackStats");
 _Static_assert(sizeof(proxIntersectionStats) == 40, "proxIntersectionStats");
-_Static_assert(sizeof(proxPatchSettings) == 16, "proxPatchSettings");
+_Static_assert(sizeof(proxPatchSettings) == 24, "proxPatchSettings");
 _Static_assert(sizeof(proxPatchStats) == 32, "proxPatchStats");
 _Static_assert(sizeof(proxStreamDeviceId) == 16, "proxStreamDeviceId");
 _Static_assert(sizeof(proxStreamDeviceDef) == 40, "proxStreamDeviceDef");

@@ -77,6 +77,7 @@ TEST_F(Patches, SettingsHaveDefaultsAndAreChecked) {
   ASSERT_OK(proxWorld_GetPatchSettings(world, &s));
   EXPECT_EQ(s.radiusOverCutoff, 1.0);
   EXPECT_EQ(s.maxAngleDegrees, 5.0);
+  EXPECT_EQ(s.maxSpreadOverCutoff, 0.002);
   EXPECT_FAILS(proxWorld_GetPatchSettings(world, nullptr), PROX_ERROR_INVALID_ARGUMENT, "settings is NULL");
   EXPECT_FAILS(proxWorld_SetPatchSettings(world, nullptr), PROX_ERROR_INVALID_ARGUMENT, "settings is NULL");
   proxPatchSettings bad = s;
@@ -87,12 +88,15 @@ TEST_F(Patches, SettingsHaveDefaultsAndAreChecked) {
   bad = s;
   bad.maxAngleDegrees = 181.0;
   EXPECT_FAILS(proxWorld_SetPatchSettings(world, &bad), PROX_ERROR_INVALID_ARGUMENT, "maxAngleDegrees");
+  bad = s;
+  bad.maxSpreadOverCutoff = -1.0;
+  EXPECT_FAILS(proxWorld_SetPatchSettings(world, &bad), PROX_ERROR_INVALID_ARGUMENT, "maxSpreadOverCutoff");
   EXPECT_FAILS(proxWorld_SetPatchSettings(proxWorldId{}, &s), PROX_ERROR_INVALID_HANDLE, "null");
   proxPatchStats st;
   EXPECT_FAILS(proxWorld_GetPatchStats(world, nullptr), PROX_ERROR_INVALID_ARGUMENT, "stats is NULL");
   ASSERT_OK(proxWorld_GetPatchStats(world, &st));  // zeros before the first step
   EXPECT_EQ(st.lmds, 0);
-  const proxPatchSettings changed{0.5, 2.0};
+  const proxPatchSettings changed{0.5, 2.0, 0.01};
   ASSERT_OK(proxWorld_SetPatchSettings(world, &changed));
   ASSERT_OK(proxWorld_GetPatchSettings(world, &s));
   EXPECT_EQ(s.radiusOverCutoff, 0.5);
@@ -115,7 +119,7 @@ TEST_F(Patches, ParallelSheetsMergeAndTheRuleCanBeTurnedOff) {
   proxWrench w_merged;
   ASSERT_OK(proxBody_GetWrench(tool, &w_merged));
 
-  const proxPatchSettings off{0.0, 5.0};
+  const proxPatchSettings off{0.0, 5.0, 0.002};
   ASSERT_OK(proxWorld_SetPatchSettings(world, &off));
   ASSERT_OK(proxWorld_Step(world));  // the pose did not move: the setting alone makes it search again
   proxPatchStats unmerged;

@@ -21,9 +21,9 @@ constexpr double kPiHere = 3.14159265358979323846;
 
 // The rule read literally, O(n^2): repeatedly, the closest unassigned LMD
 // (ties by triangle ids and features) seeds a patch and takes every
-// unassigned LMD within the radius and the angle of it.
-std::vector<LmdPair> brute_force_patches(const std::vector<LmdPair>& in, double radius,
-                                         double max_angle_deg) {
+// unassigned LMD within the radius, the angle and the spread of it.
+std::vector<LmdPair> brute_force_patches(const std::vector<LmdPair>& in, double radius, double max_angle_deg,
+                                         double max_spread) {
   std::vector<LmdPair> sorted = in;
   std::sort(sorted.begin(), sorted.end(), [](const LmdPair& a, const LmdPair& b) {
     return std::tie(a.distance, a.tri_a, a.tri_b, a.feature_a.kind, a.feature_a.index, a.feature_b.kind,
@@ -42,7 +42,8 @@ std::vector<LmdPair> brute_force_patches(const std::vector<LmdPair>& in, double 
     for (std::size_t i = s + 1; i < sorted.size(); ++i) {
       if (taken[i]) continue;
       const Vec3 ui = glm::normalize(sorted[i].point_b - sorted[i].point_a);
-      if (glm::length(sorted[i].point_b - seed.point_b) <= radius && glm::dot(ui, us) >= cos_max) {
+      if (glm::length(sorted[i].point_b - seed.point_b) <= radius && glm::dot(ui, us) >= cos_max &&
+          sorted[i].distance - seed.distance <= max_spread) {
         taken[i] = true;
         ++seed.patch_count;
       }
@@ -71,8 +72,9 @@ std::vector<LmdPair> random_lmds(std::mt19937_64& rng, int n) {
   return out;
 }
 
-PairQuery query_with(double cutoff, double radius_over_cutoff, double angle) {
+PairQuery query_with(double cutoff, double radius_over_cutoff, double angle, double spread_over_cutoff) {
   PairQuery q;
+  q.patches.max_spread_over_cutoff = spread_over_cutoff;
   q.cutoff = cutoff;
   q.patches.radius_over_cutoff = radius_over_cutoff;
   q.patches.max_angle_degrees = angle;
@@ -85,12 +87,14 @@ TEST(Patches, MergeFollowsTheRuleReadLiterally) {
   for (int round = 0; round < 20; ++round) {
     const std::vector<LmdPair> in = random_lmds(rng, 300);
     const double angle = round % 2 ? 5.0 : 0.5;
-    const PairQuery q = query_with(0.005, 0.4 + 0.1 * (round % 5), angle);
+    // Spreads of none, one and two distance steps (0.2 mm).
+    const double spread = 0.045 * (round % 3);
+    const PairQuery q = query_with(0.005, 0.4 + 0.1 * (round % 5), angle, spread);
     std::vector<LmdPair> merged = in;
     PatchStats stats;
     merger.merge(q, q.patches, merged, stats);
     const std::vector<LmdPair> expected =
-        brute_force_patches(in, q.patches.radius_over_cutoff * q.cutoff, angle);
+        brute_force_patches(in, q.patches.radius_over_cutoff * q.cutoff, angle, spread * q.cutoff);
     ASSERT_EQ(merged.size(), expected.size()) << "round " << round;
     for (std::size_t k = 0; k < merged.size(); ++k) {
       EXPECT_EQ(merged[k].tri_b, expected[k].tri_b) << "round " << round << " seed " << k;
@@ -106,7 +110,7 @@ TEST(Patches, MergeFollowsTheRuleReadLiterally) {
 TEST(Patches, ResultDoesNotDependOnTheInputOrderAndOffKeepsEverything) {
   std::mt19937_64 rng(11);
   std::vector<LmdPair> in = random_lmds(rng, 500);
-  const PairQuery q = query_with(0.005, 1.0, 5.0);
+  const PairQuery q = query_with(0.005, 1.0, 5.0, 0.05);
   PatchMerger merger;
   PatchStats stats;
   std::vector<LmdPair> first = in;
@@ -120,7 +124,7 @@ TEST(Patches, ResultDoesNotDependOnTheInputOrderAndOffKeepsEverything) {
     EXPECT_EQ(first[k].patch_count, second[k].patch_count);
     EXPECT_EQ(first[k].patch_extent, second[k].patch_extent);
   }
-  const PairQuery off = query_with(0.005, 0.0, 5.0);
+  const PairQuery off = query_with(0.005, 0.0, 5.0, 0.05);
   std::vector<LmdPair> kept = in;
   PatchStats off_stats;
   merger.merge(off, off.patches, kept, off_stats);
@@ -161,7 +165,9 @@ void check_flat_field(const char* name, const Model& a, const Model& b, const Po
       const bool near = glm::length(seeds_[i].point_b - seeds_[j].point_b) <= radius;
       const bool agree = glm::dot(glm::normalize(seeds_[i].point_b - seeds_[i].point_a),
                                   glm::normalize(seeds_[j].point_b - seeds_[j].point_a)) >= cos_max;
-      ASSERT_FALSE(near && agree) << name << ": seeds " << i << " and " << j;
+      const double spread = std::abs(seeds_[i].distance - seeds_[j].distance);
+      const bool flat = spread <= q.patches.max_spread_over_cutoff * cutoff;
+      ASSERT_FALSE(near && agree && flat) << name << ": seeds " << i << " and " << j;
     }
   // The force: unclipped (summed here from the curve, seeds weighing their
   // counts) and clipped (tool_wrench), within the stated bound of the

@@ -15,8 +15,9 @@ from ._core import (Busy, CapacityError, Error, FileError, InternalError, Invali
                     InvalidMesh, ParseError, Unsupported, VersionMismatch, WrongThread, c_dtype,
                     version_string)
 from ._devices import ScriptedDevice, StreamDevice, get_time
-from ._types import (ForceSettings, IntersectionStats, MeshInfo, MeshStats, SafetyStats, ScriptedDeviceRecord,
-                     SearchStats, StreamDeviceStats, ThreadStats, TrackStats, WorldStats, contact_dtype)
+from ._types import (ForceSettings, IntersectionStats, MeshInfo, MeshStats, PatchSettings, PatchStats, SafetyStats,
+                     ScriptedDeviceRecord, SearchStats, StreamDeviceStats, ThreadStats, TrackStats, WorldStats,
+                     contact_dtype)
 from ._world import Body, Mesh, World, distance, force_preset
 
 #: "major.minor.patch": the library's proxGetVersion(), checked at import
@@ -27,7 +28,7 @@ __all__ = [
     "__version__", "World", "Mesh", "Body", "ScriptedDevice", "StreamDevice", "get_time", "distance",
     "force_preset", "c_dtype", "StreamDeviceStats",
     "contact_dtype", "ForceSettings", "MeshInfo", "MeshStats", "WorldStats", "SearchStats", "TrackStats",
-    "IntersectionStats", "ThreadStats", "SafetyStats", "ScriptedDeviceRecord",
+    "IntersectionStats", "ThreadStats", "SafetyStats", "ScriptedDeviceRecord", "PatchSettings", "PatchStats",
     "Error", "InvalidArgument", "InvalidHandle", "InvalidMesh", "FileError", "ParseError", "Unsupported",
     "VersionMismatch", "WrongThread", "CapacityError", "InternalError", "Busy",
 ]

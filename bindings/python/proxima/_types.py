@@ -16,6 +16,10 @@ MeshStats = make_dataclass("proxMeshStats", "MeshStats", "A mesh's input counts 
 WorldStats = make_dataclass("proxWorldStats", "WorldStats", "The last step's figures (proxWorldStats).")
 SearchStats = make_dataclass("proxSearchStats", "SearchStats",
                              "The last step's global searches (proxSearchStats).")
+PatchSettings = make_dataclass("proxPatchSettings", "PatchSettings",
+                               "How LMDs merge into patches (proxPatchSettings, docs/patches.md).")
+PatchStats = make_dataclass("proxPatchStats", "PatchStats",
+                            "What the last step merged and found crossing (proxPatchStats).")
 TrackStats = make_dataclass("proxTrackStats", "TrackStats", "The last World.track() (proxTrackStats).")
 IntersectionStats = make_dataclass("proxIntersectionStats", "IntersectionStats",
                                    "The last Body.intersections() (proxIntersectionStats).")

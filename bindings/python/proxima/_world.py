@@ -13,8 +13,8 @@ import numpy as np
 from . import _header
 from ._core import (CAPACITY, c_dtype, check, enum_value, ffi, fill_c, from_c, integer, invalid, lib,
                     pose_from_c, pose_to_c, poses_array, real, snake, vec3)
-from ._types import (ForceSettings, IntersectionStats, MeshInfo, MeshStats, SafetyStats, SearchStats,
-                     ThreadStats, TrackStats, WorldStats, contact_dtype)
+from ._types import (ForceSettings, IntersectionStats, MeshInfo, MeshStats, PatchSettings, PatchStats,
+                     SafetyStats, SearchStats, ThreadStats, TrackStats, WorldStats, contact_dtype)
 
 _UINT32_MAX = 0xFFFFFFFF
 _live_worlds = weakref.WeakSet()
@@ -237,6 +237,29 @@ class World:
     @property
     def track_stats(self):
         return self._stats(TrackStats, lib.proxWorld_GetTrackStats, "proxTrackStats")
+
+    @property
+    def patch_stats(self):
+        return self._stats(PatchStats, lib.proxWorld_GetPatchStats, "proxPatchStats")
+
+    @property
+    def patch_settings(self):
+        """How LMDs merge into patches (docs/patches.md): a PatchSettings;
+        assign one, or a (radius_over_cutoff, max_angle_degrees,
+        max_spread_over_cutoff) triple, to change it from the next step on
+        (radius 0: no merging)."""
+        return self._stats(PatchSettings, lib.proxWorld_GetPatchSettings, "proxPatchSettings")
+
+    @patch_settings.setter
+    def patch_settings(self, value):
+        if not isinstance(value, PatchSettings):
+            radius, angle, spread = value
+            value = PatchSettings(radius_over_cutoff=real(radius, "radius_over_cutoff"),
+                                  max_angle_degrees=real(angle, "max_angle_degrees"),
+                                  max_spread_over_cutoff=real(spread, "max_spread_over_cutoff"))
+        out = ffi.new("proxPatchSettings*")
+        fill_c(value, out[0], "patch_settings")
+        check(lib.proxWorld_SetPatchSettings(self._idp[0], out))
 
     @property
     def safety_stats(self):

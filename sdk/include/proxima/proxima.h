@@ -356,11 +356,14 @@ PROX_API proxResult proxWorld_GetStats(proxWorldId world, proxWorldStats* stats)
  * agree within an angle merge into one contact, the closest, which weighs
  * the patch's count in the force. */
 typedef struct proxPatchSettings {
-  double radiusOverCutoff; /* the radius as a share of the world's cutoff, finite, >= 0; 0: no merging */
-  double maxAngleDegrees;  /* in [0, 180] */
+  double radiusOverCutoff;    /* the radius as a share of the world's cutoff, finite, >= 0; 0: no merging */
+  double maxAngleDegrees;     /* in [0, 180] */
+  double maxSpreadOverCutoff; /* members at most this share of the cutoff farther than the closest, finite, >=
+                                 0 */
 } proxPatchSettings;
 
-/* The world's patch rule (the default: radius = the cutoff, 5 degrees). Game thread. */
+/* The world's patch rule (the default: radius = the cutoff, 5 degrees, a
+ * spread of 0.2% of the cutoff). Game thread. */
 PROX_API proxResult proxWorld_GetPatchSettings(proxWorldId world, proxPatchSettings* settings);
 /* Changes it from the next proxWorld_Step on (PROX_ERROR_BUSY while the
  * threads run). Game thread. */

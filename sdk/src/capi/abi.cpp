@@ -32,7 +32,7 @@ static_assert(sizeof(proxMeshStats) == 48, "ABI");
 static_assert(sizeof(proxSearchStats) == 88, "ABI");
 static_assert(sizeof(proxTrackStats) == 48, "ABI");
 static_assert(sizeof(proxIntersectionStats) == 40, "ABI");
-static_assert(sizeof(proxPatchSettings) == 16, "ABI");
+static_assert(sizeof(proxPatchSettings) == 24, "ABI");
 static_assert(sizeof(proxPatchStats) == 32, "ABI");
 static_assert(sizeof(proxStreamDeviceId) == 16, "ABI");
 static_assert(sizeof(proxStreamDeviceDef) == 40, "ABI");

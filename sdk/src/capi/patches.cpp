@@ -13,7 +13,7 @@ proxResult proxWorld_GetPatchSettings(proxWorldId world, proxPatchSettings* sett
   return guard("proxWorld_GetPatchSettings", [&] {
     need(settings, "settings");
     const PatchSettings& p = world_of(world).settings().patches;
-    *settings = {p.radius_over_cutoff, p.max_angle_degrees};
+    *settings = {p.radius_over_cutoff, p.max_angle_degrees, p.max_spread_over_cutoff};
   });
 }
 
@@ -29,8 +29,12 @@ proxResult proxWorld_SetPatchSettings(proxWorldId world, const proxPatchSettings
     if (settings->maxAngleDegrees < 0.0 || settings->maxAngleDegrees > 180.0)
       fail(PROX_ERROR_INVALID_ARGUMENT, "settings->maxAngleDegrees must be in [0, 180] (it is " +
                                             std::to_string(settings->maxAngleDegrees) + ")");
+    need_finite(settings->maxSpreadOverCutoff, "settings->maxSpreadOverCutoff");
+    if (settings->maxSpreadOverCutoff < 0.0)
+      fail(PROX_ERROR_INVALID_ARGUMENT, "settings->maxSpreadOverCutoff must be >= 0 (it is " +
+                                            std::to_string(settings->maxSpreadOverCutoff) + ")");
     need_stopped(w);
-    w.set_patches({settings->radiusOverCutoff, settings->maxAngleDegrees});
+    w.set_patches({settings->radiusOverCutoff, settings->maxAngleDegrees, settings->maxSpreadOverCutoff});
   });
 }
 

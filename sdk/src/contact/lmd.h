@@ -50,6 +50,9 @@ struct LmdPair {
 struct PatchSettings {
   double radius_over_cutoff = 1.0;
   double max_angle_degrees = 5.0;
+  // Members are at most this share of the cutoff farther than the seed: a
+  // flat field, not a second feature nearby.
+  double max_spread_over_cutoff = 0.002;
   bool enabled() const { return radius_over_cutoff > 0.0; }
 };
 

@@ -49,6 +49,7 @@ void PatchMerger::merge(const PairQuery& q, const PatchSettings& settings, std::
     if (n > 0) stats.largest = std::max<std::uint32_t>(stats.largest, 1);
     return;
   }
+  const double max_spread = settings.max_spread_over_cutoff * q.cutoff;
   const double cos_max = std::cos(std::clamp(settings.max_angle_degrees, 0.0, 180.0) * (kPi / 180.0));
   order_.resize(n);
   for (std::uint32_t i = 0; i < n; ++i) order_[i] = i;
@@ -84,7 +85,7 @@ void PatchMerger::merge(const PairQuery& q, const PatchSettings& settings, std::
             if (seed >= join) continue;
             const LmdPair& sp = seeds_[seed];
             const Vec3 off = p.point_b - sp.point_b;
-            if (glm::dot(off, off) > radius * radius) continue;
+            if (glm::dot(off, off) > radius * radius || p.distance - sp.distance > max_spread) continue;
             const double c = glm::dot(u, directions_[seed_index_[seed]]);
             // A zero direction agrees with nothing.
             if (!(c >= cos_max) || glm::dot(u, u) == 0.0 ||

@@ -249,6 +249,12 @@ namespace Proxima
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxBody_GetIntersectionStats(BodyId tool, out IntersectionStats stats);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxWorld_GetPatchSettings(WorldId world, out PatchSettings settings);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxWorld_SetPatchSettings(WorldId world, ref PatchSettings settings);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxWorld_GetPatchStats(WorldId world, out PatchStats stats);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxBody_GetDistance(BodyId a, BodyId b, double maxDistance, out double distance);
 
         /// <summary>proxBody_GetContacts into a managed array, pinned for the call.</summary>

@@ -277,6 +277,26 @@ namespace Proxima
         public double Seconds;
     }
 
+    /// <summary>How LMDs merge into patches (proxPatchSettings, docs/patches.md):
+    /// the radius as a share of the cutoff (0: no merging) and the largest
+    /// angle between directions, and how much farther than the closest a
+    /// member may be (a share of the cutoff).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct PatchSettings
+    {
+        public double RadiusOverCutoff, MaxAngleDegrees, MaxSpreadOverCutoff;
+    }
+
+    /// <summary>What the last step merged into patches and found crossing (proxPatchStats).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct PatchStats
+    {
+        public int Lmds, Patches, Merged, LargestPatch;
+        public ulong IntersectingPairs;
+        public int IntersectingBodies;
+        readonly int reserved;
+    }
+
     [StructLayout(LayoutKind.Sequential)]
     public struct IntersectionStats
     {

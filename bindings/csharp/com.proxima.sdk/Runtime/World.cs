@@ -151,6 +151,20 @@ namespace Proxima
             get { Native.Check(Native.proxWorld_GetSearchStats(id, out SearchStats s)); return s; }
         }
 
+        /// <summary>How LMDs merge into patches; set it between steps, not while
+        /// the threads run (Busy).</summary>
+        public PatchSettings PatchSettings
+        {
+            get { Native.Check(Native.proxWorld_GetPatchSettings(id, out PatchSettings s)); return s; }
+            set { Native.Check(Native.proxWorld_SetPatchSettings(id, ref value)); }
+        }
+
+        /// <summary>What the last Step merged into patches and found crossing.</summary>
+        public PatchStats PatchStats
+        {
+            get { Native.Check(Native.proxWorld_GetPatchStats(id, out PatchStats s)); return s; }
+        }
+
         /// <summary>The last Track.</summary>
         public TrackStats TrackStats
         {

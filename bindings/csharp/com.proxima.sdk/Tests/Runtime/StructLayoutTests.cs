@@ -79,6 +79,8 @@ namespace Proxima.Tests
             new object[] { "proxSearchStats", typeof(SearchStats) },
             new object[] { "proxTrackStats", typeof(TrackStats) },
             new object[] { "proxIntersectionStats", typeof(IntersectionStats) },
+            new object[] { "proxPatchSettings", typeof(PatchSettings) },
+            new object[] { "proxPatchStats", typeof(PatchStats) },
         };
 
         [TestCaseSource("Twins")]
@@ -123,6 +125,7 @@ namespace Proxima.Tests
             new object[] { "proxMeshStats.hierarchyBytes", typeof(MeshStats), "HierarchyBytes" },
             new object[] { "proxSearchStats.nodePairs", typeof(SearchStats), "NodePairs" },
             new object[] { "proxTrackStats.distanceEvaluations", typeof(TrackStats), "DistanceEvaluations" },
+            new object[] { "proxPatchStats.intersectingPairs", typeof(PatchStats), "IntersectingPairs" },
         };
 
         [TestCaseSource("Offsets")]

@@ -151,6 +151,60 @@ namespace Proxima.Tests
             }
         }
 
+        // A flat square of n x n cells in z = 0, facing +z or -z.
+        static Mesh Sheet(World world, int n, double side, bool facingDown)
+        {
+            var positions = new double[3 * (n + 1) * (n + 1)];
+            for (int j = 0, k = 0; j <= n; ++j)
+                for (int i = 0; i <= n; ++i, k += 3)
+                {
+                    positions[k] = side * i / n;
+                    positions[k + 1] = side * j / n;
+                }
+            var indices = new uint[6 * n * n];
+            for (uint j = 0, k = 0; j < n; ++j)
+                for (uint i = 0; i < n; ++i, k += 6)
+                {
+                    uint a = j * (uint)(n + 1) + i, b = a + 1, c = a + (uint)(n + 1), d = c + 1;
+                    uint[] t = facingDown ? new[] { a, d, b, a, c, d } : new[] { a, b, d, a, d, c };
+                    Array.Copy(t, 0, indices, k, 6);
+                }
+            return world.CreateMesh(positions, indices);
+        }
+
+        [Test]
+        public void ParallelSheetsMergeIntoPatches()
+        {
+            using (var world = new World())
+            {
+                PatchSettings d = world.PatchSettings;
+                Assert.AreEqual(1.0, d.RadiusOverCutoff);
+                Assert.AreEqual(5.0, d.MaxAngleDegrees);
+                Assert.AreEqual(0.002, d.MaxSpreadOverCutoff);
+                Support.Throws(Result.InvalidArgument, "maxAngleDegrees",
+                               () => world.PatchSettings = new PatchSettings { RadiusOverCutoff = 1, MaxAngleDegrees = 200, MaxSpreadOverCutoff = 0.002 });
+                world.CreateBody(Sheet(world, 20, 0.02, false), BodyType.Static, Pose.Identity);
+                Body tool = world.CreateBody(Sheet(world, 20, 0.02, true), BodyType.Tool,
+                                             new Pose(new Vec3(0, 0, 0.001), Quat.Identity));
+                world.Step();
+                PatchStats merged = world.PatchStats;
+                Assert.Greater(merged.Lmds, 800);
+                Assert.LessOrEqual(merged.Patches, 31);
+                Assert.AreEqual(merged.Lmds - merged.Patches, merged.Merged);
+                Assert.AreEqual(merged.Patches, tool.GetContacts().Length);
+                Assert.AreEqual(0UL, merged.IntersectingPairs);
+                world.PatchSettings = new PatchSettings { RadiusOverCutoff = 0, MaxAngleDegrees = 5, MaxSpreadOverCutoff = 0.002 };
+                world.Step();
+                Assert.AreEqual(merged.Lmds, tool.GetContacts().Length, "unmerged");
+                Assert.AreEqual(0, world.PatchStats.Merged);
+                double h = Math.Sqrt(0.5);
+                tool.Pose = new Pose(new Vec3(0, 0.01, -0.01), new Quat(h, h, 0, 0));
+                world.Step();
+                Assert.GreaterOrEqual(world.PatchStats.IntersectingPairs, 1UL);
+                Assert.AreEqual(1, world.PatchStats.IntersectingBodies);
+            }
+        }
+
         [Test]
         public void TrackCarriesContactsToTheNewPose()
         {
