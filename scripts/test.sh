@@ -79,6 +79,7 @@ else
 fi
 build/release/bench/proxima_bench --scene all --poses 5 --builds 1 --meshes build/bench-meshes --out build/bench-smoke >/dev/null
 build/release/bench/proxima_timing_bench --seconds 0.1 --out build/bench-smoke >/dev/null
+build/release/bench/proxima_patches_bench --runs 1 >/dev/null
 ctest --test-dir build/release --output-on-failure -j "$jobs"
 
 echo "== Python bindings (bindings/python): pip install into a fresh venv, then pytest"
