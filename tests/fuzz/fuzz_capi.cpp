@@ -230,6 +230,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         CALL(proxWorld_GetTrackStats(world, &track));
         CALL(proxWorld_GetSafetyStats(world, &safety));
         CALL(proxWorld_GetThreadStats(world, static_cast<proxThread>(in.u8() % 5), &thread));
+        proxPatchStats patch_stats;
+        CALL(proxWorld_GetPatchStats(world, &patch_stats));
+        // Any patch rule, in or out of range: refused by name or taken.
+        proxPatchSettings rule{in.number(), in.number(), in.number()};
+        CALL(proxWorld_SetPatchSettings(world, &rule));
+        CALL(proxWorld_GetPatchSettings(world, &rule));
         break;
       }
       default: {
