@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "expect.h"
+#include "sheets.h"
 #include "two_cubes.h"
 
 #include <atomic>
@@ -277,6 +278,68 @@ TEST_F(Threads, AScriptedApproachFeelsTheWallAsTheStepDoes) {
   const int writes = fixed.writes.load();
   std::this_thread::sleep_for(std::chrono::milliseconds(20));
   EXPECT_EQ(fixed.writes.load(), writes) << "no callback after the world is gone";
+}
+
+// A flat field on the threads (docs/patches.md): two 2 cm sheets 1 mm
+// apart, held there by a device. The haptic loop gets the step's patches,
+// not the LMDs, and what reaches the device stays finite and clipped; the
+// rule cannot change while the threads run.
+TEST(ThreadsPatches, ParallelSheetsReachTheHapticLoopAsPatches) {
+  proxWorldId world{};
+  const proxWorldDef wd = proxDefaultWorldDef();
+  ASSERT_OK(proxCreateWorld(&wd, &world));
+  const capi_test::Sheet up(20, 0.02, false), down(20, 0.02, true);
+  const proxMeshDef du = up.def(), dd = down.def();
+  proxMeshId mu{}, md{};
+  ASSERT_OK(proxWorld_CreateMesh(world, &du, &mu));
+  ASSERT_OK(proxWorld_CreateMesh(world, &dd, &md));
+  proxBodyDef b = proxDefaultBodyDef();
+  b.mesh = mu;
+  b.type = PROX_BODY_STATIC;
+  proxBodyId floor{}, tool{};
+  ASSERT_OK(proxWorld_CreateBody(world, &b, &floor));
+  b.mesh = md;
+  b.type = PROX_BODY_TOOL;
+  b.pose = {{0.0, 0.0, 0.001}, {1, 0, 0, 0}};
+  ASSERT_OK(proxWorld_CreateBody(world, &b, &tool));
+  ASSERT_OK(proxWorld_Step(world));
+  proxPatchStats step{};
+  ASSERT_OK(proxWorld_GetPatchStats(world, &step));
+  ASSERT_GT(step.lmds, 10 * step.patches);
+
+  FixedDevice fixed;
+  fixed.pose = b.pose;
+  proxDeviceDef c = proxDefaultDeviceDef();
+  c.readPose = &FixedDevice::read;
+  c.writeWrench = &FixedDevice::write;
+  c.userData = &fixed;
+  ASSERT_OK(proxBody_SetDevice(tool, &c));
+  const proxThreadsDef def = proxDefaultThreadsDef();
+  ASSERT_OK(proxWorld_StartThreads(world, &def));
+  const proxPatchSettings off{0.0, 5.0, 0.002};
+  EXPECT_FAILS(proxWorld_SetPatchSettings(world, &off), PROX_ERROR_BUSY, "proxWorld_StopThreads");
+  // The global thread's search merged its LMDs as the step did, the local
+  // thread tracks those patches, and the haptic loop has run on them.
+  auto contacts = [&] {
+    int32_t n = 0;
+    const proxResult r = proxBody_GetContacts(tool, nullptr, 0, &n);
+    return r == PROX_SUCCESS || r == PROX_ERROR_CAPACITY ? n : -1;
+  };
+  // The force ramps up behind the safety gate's rate limit: it pushes the
+  // tool up, never past the clip.
+  proxWrench w{};
+  EXPECT_TRUE(wait_until([&] {
+    return contacts() == step.patches && proxBody_GetWrench(tool, &w) == PROX_SUCCESS && w.force.z > 0.0;
+  })) << contacts()
+      << " contacts, " << step.patches << " patches in the step";
+  EXPECT_LE(length(w.force), wd.force.maxForce + 1e-12);
+  EXPECT_EQ(contacts(), step.patches);
+  proxSafetyStats safety{};
+  EXPECT_OK(proxWorld_GetSafetyStats(world, &safety));
+  EXPECT_EQ(safety.tornSnapshots, 0u);
+  EXPECT_OK(proxWorld_StopThreads(world));
+  EXPECT_TRUE(fixed.finite.load());
+  EXPECT_OK(proxDestroyWorld(world));
 }
 
 }  // namespace
