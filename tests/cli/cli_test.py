@@ -134,6 +134,34 @@ class CliTest(unittest.TestCase):
         # The sampled distance can only be larger than the exact one.
         self.assertGreater(results["original"]["min_distance"], 0.002)
 
+    def test_lmd_reports_a_crossing_as_an_intersection_not_a_contact(self):
+        # The wall of the polylines test crosses A's face: one crossing
+        # triangle pair, and nothing at distance zero among the contacts.
+        b = write(self.dir.name, "wall.obj", "v 0.25 -1 -1\nv 0.25 -1 1\nv 0.25 3 0\nf 1 2 3\n")
+        json_path = os.path.join(self.dir.name, "cross.json")
+        r = run("lmd", self.tri, b, "--cutoff", "0.005", "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("intersection: the surfaces cross (1 triangle pairs", r.stdout)
+        with open(json_path) as f:
+            out = json.load(f)
+        self.assertEqual(out["intersection"], {"crossing": True, "intersecting_pairs": 1})
+        self.assertEqual(out["lmds"], [])
+        self.assertEqual((out["patches"]["lmds"], out["patches"]["patches"]), (0, 0))
+        # The patch rule is taken from the options, and refused by name.
+        r = run("lmd", self.tri, self.tri, "--pose-b", "0.1", "0.1", "0.001", "0", "1", "0", "0",
+                "--patch-radius", "0.5", "--patch-angle", "2", "--patch-spread", "0.01", "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(json_path) as f:
+            out = json.load(f)
+        self.assertEqual(out["patches"]["radius_over_cutoff"], 0.5)
+        self.assertEqual(out["patches"]["max_angle_degrees"], 2.0)
+        self.assertEqual(out["patches"]["max_spread_over_cutoff"], 0.01)
+        self.assertEqual((out["patches"]["lmds"], out["patches"]["patches"]), (1, 1))
+        self.assertFalse(out["intersection"]["crossing"])
+        r = run("lmd", self.tri, self.tri, "--patch-angle", "200")
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("maxAngleDegrees", r.stderr)
+
     def test_polylines_of_two_crossing_triangles(self):
         # B: a triangle in the plane x = 0.25 crossing A's face along
         # x = 0.25, y in [0, 0.75]: one open polyline of length 0.75.
