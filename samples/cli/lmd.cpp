@@ -60,8 +60,10 @@ int lmd(Args& args) {
   check(proxWorld_GetPatchStats(scene.world(), &ps));
   const double min_d = min_distance(contacts);
 
-  std::printf("%s LMDs between %s and %s within %g: %zu (from %llu candidates)\n", method_name(method),
-              path_a.c_str(), path_b.c_str(), cutoff, contacts.size(),
+  // One contact per patch of LMDs (docs/patches.md): as many as the LMDs
+  // when nothing merged.
+  std::printf("%s contacts between %s and %s within %g: %zu (patches of %d LMDs, from %llu candidates)\n",
+              method_name(method), path_a.c_str(), path_b.c_str(), cutoff, contacts.size(), ps.lmds,
               static_cast<unsigned long long>(r.candidates));
   for (const proxContact& c : contacts)
     std::printf("  tri %u - tri %u  d=%.9g  %s-%s  a=(%.6g, %.6g, %.6g) b=(%.6g, %.6g, %.6g)\n",
