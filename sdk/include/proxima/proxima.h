@@ -358,8 +358,8 @@ PROX_API proxResult proxWorld_GetStats(proxWorldId world, proxWorldStats* stats)
 typedef struct proxPatchSettings {
   double radiusOverCutoff;    /* the radius as a share of the world's cutoff, finite, >= 0; 0: no merging */
   double maxAngleDegrees;     /* in [0, 180] */
-  double maxSpreadOverCutoff; /* members at most this share of the cutoff farther than the closest, finite, >=
-                                 0 */
+  /* members at most this share of the cutoff farther than the closest, finite, >= 0 */
+  double maxSpreadOverCutoff;
 } proxPatchSettings;
 
 /* The world's patch rule (the default: radius = the cutoff, 5 degrees, a
