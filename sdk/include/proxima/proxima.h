@@ -356,8 +356,8 @@ PROX_API proxResult proxWorld_GetStats(proxWorldId world, proxWorldStats* stats)
  * agree within an angle merge into one contact, the closest, which weighs
  * the patch's count in the force. */
 typedef struct proxPatchSettings {
-  double radiusOverCutoff;    /* the radius as a share of the world's cutoff, finite, >= 0; 0: no merging */
-  double maxAngleDegrees;     /* in [0, 180] */
+  double radiusOverCutoff; /* the radius as a share of the world's cutoff, finite, >= 0; 0: no merging */
+  double maxAngleDegrees;  /* in [0, 180] */
   /* members at most this share of the cutoff farther than the closest, finite, >= 0 */
   double maxSpreadOverCutoff;
 } proxPatchSettings;
