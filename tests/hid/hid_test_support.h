@@ -75,6 +75,9 @@ inline Bytes puck_buttons(std::uint8_t bits) { return {0x03, bits, 0x00}; }
 
 inline double length(const proxVec3& v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
 
+// The scene's cutoff and safety distance (m).
+inline constexpr double kCutoff = 0.01, kSafety = 0.001;
+
 // The world of two cubes; the tool starts at x = kFar (3 cm from the wall,
 // beyond the 1 cm cutoff).
 class HidScene : public ::testing::Test {
@@ -83,8 +86,8 @@ class HidScene : public ::testing::Test {
 
   void SetUp() override {
     proxWorldDef def = proxDefaultWorldDef();
-    def.cutoff = 0.01;
-    def.force.safetyDistance = 0.001;
+    def.cutoff = kCutoff;
+    def.force.safetyDistance = kSafety;
     def.force.decayLength = 0.002;
     ASSERT_OK(proxCreateWorld(&def, &world));
     const double p[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
