@@ -220,11 +220,12 @@ TEST_F(HidThreads, OutputsFollowTheForceAndTheDistanceIntoContactAndBackOut) {
   const proxHidDeviceStats s = stats_of(device);
   EXPECT_EQ(s.outputsWritten, all.size());
   EXPECT_EQ(s.failedWrites, 0u);
-  // At most 25 a second: consecutive writes at least 40 ms apart (less 4 ms
-  // of arrival jitter).
+  // At most 25 a second: consecutive writes 40 ms apart on the device's
+  // thread, seen here at least 30 ms apart (arrival jitter on a loaded
+  // machine; unlimited, a change would be written every few milliseconds).
   const std::vector<double> t = bus.write_times(dev);
   ASSERT_GT(t.size(), 3u);
-  for (std::size_t i = 1; i < t.size(); ++i) EXPECT_GE(t[i] - t[i - 1], 0.036) << i;
+  for (std::size_t i = 1; i < t.size(); ++i) EXPECT_GE(t[i] - t[i - 1], 0.030) << i;
   ASSERT_OK(proxWorld_StopThreads(world));
   expect_haptic_thread_clean();
 }
@@ -303,6 +304,13 @@ TEST_F(HidThreads, UnplugFadesAndReconnectResumesWhereItWas) {
   drive_to(dev, device, ds4_report(0, 128, 128, 128), centre, kFar - 0.0235, true);
   sleep_seconds(0.3);
   ASSERT_GT(recorder.last_force(), 0.05);
+  // Through the recorder's callbacks the distance is not known: the light
+  // bar follows the force (docs/devices.md).
+  const std::vector<Bytes> w = bus.writes(dev);
+  ASSERT_FALSE(w.empty());
+  EXPECT_GT(w.back()[5], 0);
+  EXPECT_EQ(w.back()[6], w.back()[5]);
+  EXPECT_EQ(w.back()[7], 255 - w.back()[5]);
   const proxPose held = pose_of(device);
   bus.unplug(dev);
   ASSERT_TRUE(wait_until([&] { return !stats_of(device).connected; }));
