@@ -24,32 +24,35 @@ need_packages "${INSTALL_PACKAGES[@]}"
 [ -n "${CI:-}" ] && export PROX_DEB_SYSTEM_INSTALL=${PROX_DEB_SYSTEM_INSTALL:-1}
 
 jobs=$(nproc)
+# Each stage says when it starts, so a slow CI run shows where its time went
+# (the whole run must stay under 30 minutes).
+stage() { echo "== $* [at $((SECONDS / 60)) min $((SECONDS % 60)) s]"; }
 configure() {  # configure DIR [cmake args...]
   local dir=$1
   shift
   cmake -S . -B "$dir" -G Ninja -DPROX_WARNINGS_AS_ERRORS=ON -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" "$@" >/dev/null
 }
 
-echo "== core only (nothing optional: no tests, samples, benchmarks or glTF)"
+stage "core only (nothing optional: no tests, samples, benchmarks or glTF)"
 configure build/core -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_SAMPLES=OFF -DPROX_BUILD_BENCHMARKS=OFF \
   -DPROX_WITH_GLTF=OFF -DPROX_BUILD_CSHARP=OFF \
   -DPROX_WITH_HIDAPI=OFF \
   -DPROX_WITH_OPENXR=OFF
 cmake --build build/core -j "$jobs"
 
-echo "== address + undefined-behaviour sanitizers"
+stage "address + undefined-behaviour sanitizers"
 configure build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=address,undefined
 cmake --build build/asan -j "$jobs"
 ctest --test-dir build/asan --output-on-failure -j "$jobs"
 
-echo "== thread sanitizer (the tests labelled 'threads': handoffs, runtime threads, C API threads and devices)"
+stage "thread sanitizer (the tests labelled 'threads': handoffs, runtime threads, C API threads and devices)"
 configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=thread -DPROX_BUILD_SAMPLES=OFF
 cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests \
   proxima_capi_stream_tests proxima_capi_timing_tests \
   proxima_hid_capi_tests proxima_openxr_tests proxima_coupling_threads_tests
 ctest --test-dir build/tsan --output-on-failure -L threads
 
-echo "== fuzzers (libFuzzer, ASan + UBSan): each target 20 s on corpora from the shared assets (docs/robustness.md)"
+stage "fuzzers (libFuzzer, ASan + UBSan): each target 20 s on corpora from the shared assets (docs/robustness.md)"
 need_packages "${FUZZ_PACKAGES[@]}"
 # clang warns where GCC does not (INFINITY, a float, promoted in the kernel):
 # the fuzz build does not add -Werror; the GCC builds keep it.
@@ -59,7 +62,7 @@ cmake --build build/fuzz -j "$jobs" --target proxima_fuzz_obj proxima_fuzz_poses
   proxima_fuzz_gltf_capi proxima_fuzz_create_mesh proxima_fuzz_capi
 tests/fuzz/run.sh build/fuzz "$(assets_dir)" "${PROX_FUZZ_SECONDS:-20}"
 
-echo "== release"
+stage "release"
 # FCL, the scene benchmark's peer (never a dependency of the SDK): the smoke
 # run below measures against it, and the test Bench.PeersApart checks that no
 # benchmark executable loads two builds of one library (docs/benchmarks.md).
@@ -81,7 +84,7 @@ build/release/bench/proxima_bench --scene all --poses 5 --builds 1 --meshes buil
 build/release/bench/proxima_timing_bench --seconds 0.1 --out build/bench-smoke >/dev/null
 ctest --test-dir build/release --output-on-failure -j "$jobs"
 
-echo "== Python bindings (bindings/python): pip install into a fresh venv, then pytest"
+stage "Python bindings (bindings/python): pip install into a fresh venv, then pytest"
 # Pinned PyPI versions: bindings/python/ci-constraints.txt. The contacts are
 # compared with the release build's proxima tool (PROXIMA_CLI).
 rm -rf build/py-venv
@@ -94,3 +97,4 @@ build/py-venv/bin/python bindings/python/bench/step_overhead.py "$(assets_dir)/b
 build/py-venv/bin/python bindings/python/bench/gil.py "$(assets_dir)/bunny.obj" --seconds 0.2 >/dev/null
 PROXIMA_CLI="$(pwd)/build/release/samples/cli/proxima" PROXIMA_ASSETS="$(assets_dir)" \
   build/py-venv/bin/pytest -q bindings/python/tests
+stage "every stage passed"
