@@ -149,6 +149,12 @@ class HidThreads : public HidScene {
 // docs/devices.md documents: green at rest (no contact, or d at or beyond
 // the cutoff), red at or inside the safety distance, and in between green
 // blended linearly towards amber (255, 160, 0) as d falls from the cutoff.
+// Where the tool is driven to: a gap to the wall, with the left stick's x.
+struct Stop {
+  double gap;
+  std::uint8_t stick;
+};
+
 static std::array<int, 3> documented_colour(double d) {
   if (d <= kSafety) return {255, 0, 0};
   if (d >= kCutoff) return {0, 255, 0};
@@ -157,7 +163,7 @@ static std::array<int, 3> documented_colour(double d) {
 }
 
 // The DualSense's rumble, trigger resistance and light bar for an approach
-// in stops (8, 5, 2 mm from the wall, then 0.6 mm: inside the safety
+// in stops (8, 5, 2 mm from the wall, then 0.7 mm: inside the safety
 // distance) and back out to 2 cm: nothing while far; the rumble and trigger
 // rising with the force; the light bar's colour at each stop that of the
 // distance the tool is held at, never going back on the way in; back to
@@ -170,10 +176,14 @@ TEST_F(HidThreads, OutputsFollowTheForceAndTheDistanceIntoContactAndBackOut) {
   sleep_seconds(0.3);
   EXPECT_TRUE(bus.writes(dev).empty()) << "outputs while far from everything";
   const Bytes centre = dualsense_report(128, 128, 128, 128);
-  for (const double gap : {0.008, 0.005, 0.002, 0.0006}) {
-    drive_to(dev, device, dualsense_report(0, 128, 128, 128), centre, kWall + gap, true);
+  // The last stop at a fifth of the speed (the stick half way: 0.45 past
+  // the dead zone, squared), so that stopping late does not take the tool
+  // through the wall's face.
+  for (const Stop& stop : {Stop{0.008, 0}, Stop{0.005, 0}, Stop{0.002, 0}, Stop{0.0007, 64}}) {
+    drive_to(dev, device, dualsense_report(stop.stick, 128, 128, 128), centre, kWall + stop.gap, true);
     sleep_seconds(0.2);
     const double d = pose_of(device).position.x - kWall;  // the cubes' faces are parallel
+    ASSERT_GT(d, 0.0) << "the tool stopped too late, inside the wall";
     const std::vector<Bytes> w = bus.writes(dev);
     ASSERT_FALSE(w.empty()) << "nothing written at " << d << " m";
     const std::array<int, 3> c = documented_colour(d);
@@ -260,16 +270,17 @@ TEST_F(HidThreads, ADeviceThatStopsAnsweringWritesBlocksNothingElse) {
 }
 
 // The DualShock 4's rumble and light bar: held 4 mm from the wall, then at
-// 0.5 mm, then back out.
+// 0.7 mm, then back out.
 TEST_F(HidThreads, DualShock4RumbleAndLightBarFollowTheDistance) {
   const int dev = bus.add(device_spec("ds4v2"));
   device = attach_direct(0x054c, 0x09cc, 0.04);
   start();
   const Bytes centre = ds4_report(128, 128, 128, 128);
-  for (const double gap : {0.004, 0.0005}) {
-    drive_to(dev, device, ds4_report(0, 128, 128, 128), centre, kWall + gap, true);
+  for (const Stop& stop : {Stop{0.004, 0}, Stop{0.0007, 64}}) {
+    drive_to(dev, device, ds4_report(stop.stick, 128, 128, 128), centre, kWall + stop.gap, true);
     sleep_seconds(0.2);
     const double d = pose_of(device).position.x - kWall;
+    ASSERT_GT(d, 0.0) << "the tool stopped too late, inside the wall";
     const std::vector<Bytes> w = bus.writes(dev);
     ASSERT_FALSE(w.empty());
     ASSERT_EQ(w.back().size(), 32u);
