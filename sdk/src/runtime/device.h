@@ -24,8 +24,9 @@ struct DeviceWrench {
   bool limited;      // the safety gate changed what the contacts asked for
   // The closest distance of the tool's contact set this tick (m): re-measured
   // at the device pose for a free tool, the proxy's for a constrained one;
-  // 0 when pushed through; kNoContact when there is none or the contacts are
-  // not trusted this tick; kUnknownDistance when not known.
+  // 0 when pushed through; kNoContact when there is none; the last trusted
+  // tick's when the contacts are not trusted this tick; kUnknownDistance
+  // when not known.
   double closest_distance = kNoContact;
   // The world's, for a device that maps the distance (m).
   double safety_distance = 0.0, cutoff = 0.0;

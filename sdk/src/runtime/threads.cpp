@@ -372,7 +372,10 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
           settings_.trust_distance)
     count(untrusted_ticks_), valid = false;
   Wrench target;
-  double closest = kNoContact;  // what the device is told when the contacts are not trusted
+  // A tick whose contacts are not trusted (stale, left behind, no pose this
+  // tick) tells the device the last trusted distance: a stall of the
+  // tracking thread is not the contact going away.
+  double closest = snapshot.sequence > 0 ? tool.closest : kNoContact;
   if (tool.constrained) {
     // The spring-damper from the device pose to the proxy the snapshot was
     // tracked at.
@@ -387,6 +390,7 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
   } else if (valid) {
     target = evaluate_contacts(world_.settings_.force, snapshot, sample.pose, tool.reference_local, &closest);
   }
+  tool.closest = closest;
   bool limited = false;
   const Wrench w = tool.filter.step(target, valid, dt, &limited);
   if (limited) count(limited_ticks_);
