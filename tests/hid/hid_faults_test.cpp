@@ -101,6 +101,20 @@ class HidThreads : public HidScene {
     EXPECT_OK(proxWorld_Step(world));
     return d;
   }
+  // Waits (up to 5 s: the threads may be held up on a loaded machine) until
+  // the last light bar colour written, at byte `at`, is `c` give or take one
+  // step of rounding; the caller then checks it.
+  void light_bar_settles(int dev, std::size_t at, const std::array<int, 3>& c) {
+    wait_until(
+        [&] {
+          const std::vector<Bytes> w = bus.writes(dev);
+          if (w.empty() || w.back().size() < at + 3) return false;
+          for (int k = 0; k < 3; ++k)
+            if (std::abs(int(w.back()[at + std::size_t(k)]) - c[std::size_t(k)]) > 1) return false;
+          return true;
+        },
+        5.0);
+  }
   // The force the haptic loop last rendered on the tool (N).
   double tool_force() {
     proxWrench w{};
@@ -181,12 +195,13 @@ TEST_F(HidThreads, OutputsFollowTheForceAndTheDistanceIntoContactAndBackOut) {
   // through the wall's face.
   for (const Stop& stop : {Stop{0.008, 0}, Stop{0.005, 0}, Stop{0.002, 0}, Stop{0.0007, 64}}) {
     drive_to(dev, device, dualsense_report(stop.stick, 128, 128, 128), centre, kWall + stop.gap, true);
-    sleep_seconds(0.2);
+    sleep_seconds(0.05);
     const double d = pose_of(device).position.x - kWall;  // the cubes' faces are parallel
     ASSERT_GT(d, 0.0) << "the tool stopped too late, inside the wall";
+    const std::array<int, 3> c = documented_colour(d);
+    light_bar_settles(dev, 45, c);
     const std::vector<Bytes> w = bus.writes(dev);
     ASSERT_FALSE(w.empty()) << "nothing written at " << d << " m";
-    const std::array<int, 3> c = documented_colour(d);
     EXPECT_NEAR(w.back()[45], c[0], 1) << "red at " << d << " m";
     EXPECT_NEAR(w.back()[46], c[1], 1) << "green at " << d << " m";
     EXPECT_EQ(w.back()[47], c[2]) << "blue at " << d << " m";
@@ -278,15 +293,16 @@ TEST_F(HidThreads, DualShock4RumbleAndLightBarFollowTheDistance) {
   const Bytes centre = ds4_report(128, 128, 128, 128);
   for (const Stop& stop : {Stop{0.004, 0}, Stop{0.0007, 64}}) {
     drive_to(dev, device, ds4_report(stop.stick, 128, 128, 128), centre, kWall + stop.gap, true);
-    sleep_seconds(0.2);
+    sleep_seconds(0.05);
     const double d = pose_of(device).position.x - kWall;
     ASSERT_GT(d, 0.0) << "the tool stopped too late, inside the wall";
+    const std::array<int, 3> c = documented_colour(d);
+    light_bar_settles(dev, 6, c);
     const std::vector<Bytes> w = bus.writes(dev);
     ASSERT_FALSE(w.empty());
     ASSERT_EQ(w.back().size(), 32u);
     EXPECT_EQ(w.back()[0], 0x05);
     EXPECT_EQ(w.back()[1], 0x03);
-    const std::array<int, 3> c = documented_colour(d);
     EXPECT_NEAR(w.back()[6], c[0], 1) << "red at " << d << " m";
     EXPECT_NEAR(w.back()[7], c[1], 1) << "green at " << d << " m";
     EXPECT_EQ(w.back()[8], c[2]) << "blue at " << d << " m";
