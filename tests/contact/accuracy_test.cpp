@@ -45,7 +45,7 @@ TEST(Accuracy, PreciseMatchesTheReferenceOnBunnyPairs) {
   long candidates = 0;
   int poses_with_contacts = 0;
   double precise_error = 0.0, original_error = 0.0;  // of the minimum distance, over the model size
-  for (int i = 0; i < kPoses; ++i) {
+  for (int i = 0; i < sampled_poses(kPoses); ++i) {
     const double gap = random_gap(rng);
     const Pose pose = pose_at_gap(*model, *model, gap, rng);
     const PairQuery q = make_query(*model, Pose{}, *model, pose, kCutoff);
@@ -124,7 +124,7 @@ TEST(Accuracy, PreciseMatchesTheReferenceOnGltfModels) {
     std::uniform_real_distribution<double> log_gap(std::log(5e-4 * size), std::log(cutoff));
     Match total, original;
     double error = 0.0;
-    for (int i = 0; i < 50; ++i) {
+    for (int i = 0; i < sampled_poses(50); ++i) {
       const double gap = std::exp(log_gap(rng));
       const Pose pose = pose_at_gap(*pair.a, *pair.b, gap, rng);
       const PairQuery q = make_query(*pair.a, Pose{}, *pair.b, pose, cutoff);

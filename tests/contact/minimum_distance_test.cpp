@@ -43,7 +43,7 @@ TEST(MinimumDistance, MatchesTheReferenceOnCadPartsAndTheBunny) {
     const double cutoff = 0.03 * size;
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> log_gap(std::log(1e-4 * size), std::log(cutoff));
-    for (int i = 0; i < 20; ++i) {
+    for (int i = 0; i < sampled_poses(20); ++i) {
       const Pose pose = pose_at_gap(*pair.a, *pair.b, std::exp(log_gap(rng)), rng);
       const PairQuery q = make_query(*pair.a, Pose{}, *pair.b, pose, cutoff);
       ProximityResult ref;

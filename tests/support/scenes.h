@@ -15,6 +15,19 @@ namespace prox::testing {
 // ../shared/assets beside the repository unless configured otherwise).
 std::string asset_path(const std::string& relative);
 
+// How many of `n` random poses a test against the brute-force reference
+// runs: all of them, or a quarter (the same first quarter) in a sanitizer
+// build, where the reference runs about ten times slower. The release suite
+// checks the full count; a sanitizer build is there for memory errors and
+// undefined behaviour, which the first poses already exercise.
+constexpr int sampled_poses(int n) {
+#ifdef PROX_TESTS_SANITIZED
+  return n / 4 > 0 ? n / 4 : 1;
+#else
+  return n;
+#endif
+}
+
 // A mesh and its hierarchy.
 struct Model {
   Mesh mesh;
