@@ -1,11 +1,13 @@
-// Micro-benchmarks of the geometry kernel. Pairs are random unit-size
-// triangles at the distances the engine sees at its leaves: close (within a
-// tenth of their size), some intersecting. Run:
+// Micro-benchmarks of the geometry kernel, and of the haptic loop's contact
+// evaluation. Pairs are random unit-size triangles at the distances the
+// engine sees at its leaves: close (within a tenth of their size), some
+// intersecting. Run:
 //   proxima_kernel_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include "geometry/predicates.h"
 #include "geometry/triangle_distance.h"
 #include "geometry/triangle_intersection.h"
 #include "geometry/visibility.h"
+#include "runtime/haptic.h"
 
 #include <benchmark/benchmark.h>
 #include <glm/geometric.hpp>
@@ -94,6 +96,32 @@ void BM_Orient3dExactPath(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_Orient3dExactPath);
+
+// The haptic loop's evaluation of a tool's contacts at the tick's pose (the
+// threads hand it up to 1,024), without (0) and with (1) the closest
+// distance it tells the device.
+void BM_HapticEvaluate(benchmark::State& state) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-0.05, 0.05), gap(0.0005, 0.005);
+  runtime::ContactSnapshot s;
+  for (int i = 0; i < 1024; ++i) {
+    const Vec3 p(u(rng), u(rng), 0.0);
+    const double d = gap(rng);
+    s.contacts.push_back({p + Vec3(0.0, 0.0, d), p, Vec3(0.0, 0.0, 1.0), d});
+  }
+  s.sequence = 1;
+  const ForceSettings force = hard_force_settings();
+  const Pose pose{glm::dmat3(1.0), Vec3(0.0, 0.0, 1e-5)};
+  const bool closest = state.range(0) != 0;
+  double least = 0.0;
+  for (auto _ : state) {
+    const Wrench w = runtime::evaluate_contacts(force, s, pose, Vec3(0.0), closest ? &least : nullptr);
+    benchmark::DoNotOptimize(w);
+    benchmark::DoNotOptimize(least);
+  }
+  state.SetItemsProcessed(state.iterations() * 1024);
+}
+BENCHMARK(BM_HapticEvaluate)->Arg(0)->Arg(1)->ArgName("closest");
 
 }  // namespace
 

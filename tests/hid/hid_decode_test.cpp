@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <limits>
+
 #include <glm/gtc/quaternion.hpp>
 
 #include <cmath>
@@ -343,4 +346,36 @@ TEST(HidOutput, Reports) {
   ASSERT_EQ(lit.size, 2u);
   EXPECT_EQ(lit.bytes[0], 0x04);
   EXPECT_EQ(lit.bytes[1], 1);
+}
+
+// The light bar from the closest distance, by the mapping in
+// docs/devices.md: cutoff 10 mm, safety distance 1 mm.
+TEST(HidOutput, LightBarFollowsTheClosestDistance) {
+  OutputSettings s;
+  OutputInput in;
+  in.safety_distance = 0.001, in.cutoff = 0.010;
+  auto colour = [&](HidProfile p, double d, double force = 0.0) {
+    in.closest_distance = d, in.force = force;
+    const OutputReport r = build_output(p, in, s);
+    const std::size_t at = p == HidProfile::DualShock4 ? 6 : 45;
+    return std::array<int, 3>{r.bytes[at], r.bytes[at + 1], r.bytes[at + 2]};
+  };
+  using C = std::array<int, 3>;
+  for (const HidProfile p : {HidProfile::DualShock4, HidProfile::DualSense}) {
+    EXPECT_EQ(colour(p, std::numeric_limits<double>::infinity()), (C{0, 255, 0})) << "no contact: rest";
+    EXPECT_EQ(colour(p, 0.020), (C{0, 255, 0})) << "beyond the cutoff";
+    EXPECT_EQ(colour(p, 0.010), (C{0, 255, 0})) << "at the cutoff";
+    // 7 mm: a third of the way from the cutoff to the safety distance,
+    // t = 1/3: 85 red, 255 - 95 / 3 = 223.3 green.
+    EXPECT_EQ(colour(p, 0.007), (C{85, 223, 0}));
+    // 4 mm: t = 2/3: 170 red, 191.7 green.
+    EXPECT_EQ(colour(p, 0.004), (C{170, 192, 0}));
+    EXPECT_EQ(colour(p, 0.001), (C{255, 0, 0})) << "at the safety distance: contact";
+    EXPECT_EQ(colour(p, 0.0), (C{255, 0, 0})) << "pushed through";
+    // The force does not change the colour when the distance is known ...
+    EXPECT_EQ(colour(p, 0.020, 2.0), (C{0, 255, 0}));
+    // ... and gives it when it is not (a def wrapped in the application's
+    // callbacks): 1.5 N of 3 is 127.5 -> 128 red.
+    EXPECT_EQ(colour(p, std::numeric_limits<double>::quiet_NaN(), 1.5), (C{128, 127, 0}));
+  }
 }

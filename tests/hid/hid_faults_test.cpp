@@ -6,6 +6,7 @@
 #include "hid/hid_test_support.h"
 #include "support/marked_threads.h"
 
+#include <array>
 #include <atomic>
 #include <cstdlib>
 #include <memory>
@@ -69,6 +70,57 @@ class HidThreads : public HidScene {
     EXPECT_OK(proxBody_SetDevice(tool, &rd));
     return d;
   }
+  // Opens the first device with these ids and hands its def to the tool as
+  // it comes, so the tool holds the device itself (the haptic loop hands it
+  // the closest distance). A second tool far from everything holds the
+  // recorder, around a device that stays put, so the haptic thread is still
+  // marked and its ticks counted.
+  proxHidDeviceId attach_direct(std::uint16_t vid, std::uint16_t pid, double speed,
+                                double output_rate = 250.0) {
+    proxHidDeviceDef def = def_for(vid, pid);
+    def.linearSpeed = speed;
+    def.outputRate = output_rate;
+    proxHidDeviceId d{};
+    EXPECT_OK(proxWorld_OpenHidDevice(world, &def, &d));
+    proxDeviceDef dd{};
+    EXPECT_OK(proxHidDevice_GetDeviceDef(d, &dd));
+    EXPECT_OK(proxBody_SetDevice(tool, &dd));
+    proxBodyDef bd = proxDefaultBodyDef();
+    bd.mesh = mesh;
+    bd.type = PROX_BODY_TOOL;
+    bd.pose = kAside;
+    EXPECT_OK(proxWorld_CreateBody(world, &bd, &aside));
+    recorder.inner = proxDefaultDeviceDef();
+    recorder.inner.readPose = [](void*, proxPose* pose) -> proxBool {
+      *pose = kAside;
+      return 1;
+    };
+    recorder.inner.writeWrench = [](void*, const proxWrench*) {};
+    const proxDeviceDef rd = recorder.def();
+    EXPECT_OK(proxBody_SetDevice(aside, &rd));
+    EXPECT_OK(proxWorld_Step(world));
+    return d;
+  }
+  // Waits (up to 5 s: the threads may be held up on a loaded machine) until
+  // the last light bar colour written, at byte `at`, is `c` give or take one
+  // step of rounding; the caller then checks it.
+  void light_bar_settles(int dev, std::size_t at, const std::array<int, 3>& c) {
+    wait_until(
+        [&] {
+          const std::vector<Bytes> w = bus.writes(dev);
+          if (w.empty() || w.back().size() < at + 3) return false;
+          for (int k = 0; k < 3; ++k)
+            if (std::abs(int(w.back()[at + std::size_t(k)]) - c[std::size_t(k)]) > 1) return false;
+          return true;
+        },
+        5.0);
+  }
+  // The force the haptic loop last rendered on the tool (N).
+  double tool_force() {
+    proxWrench w{};
+    EXPECT_OK(proxBody_GetWrench(tool, &w));
+    return length(w.force);
+  }
   void start() {
     const proxThreadsDef t = proxDefaultThreadsDef();
     ASSERT_OK(proxWorld_StartThreads(world, &t));
@@ -98,47 +150,85 @@ class HidThreads : public HidScene {
 #endif
   }
 
+  static constexpr double kWall = 0.1;  // the wall's face: the tool's gap is its x less this
+  static constexpr proxPose kAside{{-1.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}};
   Recorder recorder;
   proxHidDeviceId device{};
+  proxBodyId aside{};
 };
 
 }  // namespace
 
+// The light bar's colour at the closest distance d, from the mapping
+// docs/devices.md documents: green at rest (no contact, or d at or beyond
+// the cutoff), red at or inside the safety distance, and in between green
+// blended linearly towards amber (255, 160, 0) as d falls from the cutoff.
+// Where the tool is driven to: a gap to the wall, with the left stick's x.
+struct Stop {
+  double gap;
+  std::uint8_t stick;
+};
+
+static std::array<int, 3> documented_colour(double d) {
+  if (d <= kSafety) return {255, 0, 0};
+  if (d >= kCutoff) return {0, 255, 0};
+  const double t = (kCutoff - d) / (kCutoff - kSafety);
+  return {int(std::lround(255.0 * t)), int(std::lround(255.0 + (160.0 - 255.0) * t)), 0};
+}
+
 // The DualSense's rumble, trigger resistance and light bar for an approach
-// to 6.5 mm from the wall and back out: nothing while far, rising with the
-// force, back to rest after.
-TEST_F(HidThreads, OutputsFollowTheForceIntoContactAndBackOut) {
+// in stops (8, 5, 2 mm from the wall, then 0.7 mm: inside the safety
+// distance) and back out to 2 cm: nothing while far; the rumble and trigger
+// rising with the force; the light bar's colour at each stop that of the
+// distance the tool is held at, never going back on the way in; back to
+// rest after.
+TEST_F(HidThreads, OutputsFollowTheForceAndTheDistanceIntoContactAndBackOut) {
   const int dev = bus.add(device_spec("dualsense"));
   // 25 outputs a second at most: slower than the force changes, so the limit binds.
-  device = attach(0x054c, 0x0ce6, 0.02, 25.0);
+  device = attach_direct(0x054c, 0x0ce6, 0.04, 25.0);
   start();
   sleep_seconds(0.3);
   EXPECT_TRUE(bus.writes(dev).empty()) << "outputs while far from everything";
   const Bytes centre = dualsense_report(128, 128, 128, 128);
-  drive_to(dev, device, dualsense_report(0, 128, 128, 128), centre, kFar - 0.0235, true);
-  sleep_seconds(0.4);
-  const double felt = recorder.last_force();
+  // The last stop at a fifth of the speed (the stick half way: 0.45 past
+  // the dead zone, squared), so that stopping late does not take the tool
+  // through the wall's face.
+  for (const Stop& stop : {Stop{0.008, 0}, Stop{0.005, 0}, Stop{0.002, 0}, Stop{0.0007, 64}}) {
+    drive_to(dev, device, dualsense_report(stop.stick, 128, 128, 128), centre, kWall + stop.gap, true);
+    sleep_seconds(0.05);
+    const double d = pose_of(device).position.x - kWall;  // the cubes' faces are parallel
+    ASSERT_GT(d, 0.0) << "the tool stopped too late, inside the wall";
+    const std::array<int, 3> c = documented_colour(d);
+    light_bar_settles(dev, 45, c);
+    const std::vector<Bytes> w = bus.writes(dev);
+    ASSERT_FALSE(w.empty()) << "nothing written at " << d << " m";
+    EXPECT_NEAR(w.back()[45], c[0], 1) << "red at " << d << " m";
+    EXPECT_NEAR(w.back()[46], c[1], 1) << "green at " << d << " m";
+    EXPECT_EQ(w.back()[47], c[2]) << "blue at " << d << " m";
+  }
+  const double felt = tool_force();
   EXPECT_GT(felt, 0.05);
   const std::vector<Bytes> in = bus.writes(dev);
   ASSERT_FALSE(in.empty());
-  int last = 0;
+  int last = 0, last_red = 0, last_green = 255;
   for (const Bytes& w : in) {
     ASSERT_EQ(w.size(), 48u);
     ASSERT_EQ(w[0], 0x02);
     EXPECT_GE(int(w[3]), last) << "the rumble fell while approaching";
     last = w[3];
     EXPECT_EQ(w[3], w[4]);
-    EXPECT_EQ(w[45], w[3]);        // red rises with the force
-    EXPECT_EQ(w[46], 255 - w[3]);  // green falls
+    EXPECT_GE(int(w[45]), last_red) << "the light bar's red fell while approaching";
+    EXPECT_LE(int(w[46]), last_green) << "the light bar's green rose while approaching";
+    last_red = w[45], last_green = w[46];
   }
   const Bytes& near = in.back();
   // 3 N is full: the rumble and the trigger's resistance are the force's share of it.
   EXPECT_NEAR(near[3], felt / 3.0 * 255.0, 3.0);
   EXPECT_EQ(near[11], 0x01);  // constant resistance
   EXPECT_NEAR(near[13], felt / 3.0 * 255.0, 3.0);
-  // Back out.
-  drive_to(dev, device, dualsense_report(255, 128, 128, 128), centre, kFar - 0.005, false);
-  ASSERT_TRUE(wait_until([&] { return recorder.last_force() == 0.0; }));
+  // Back out, beyond the cutoff.
+  drive_to(dev, device, dualsense_report(255, 128, 128, 128), centre, kWall + 0.02, false);
+  ASSERT_TRUE(wait_until([&] { return tool_force() == 0.0; }));
   sleep_seconds(0.1);
   const std::vector<Bytes> all = bus.writes(dev);
   ASSERT_GT(all.size(), in.size());
@@ -147,17 +237,20 @@ TEST_F(HidThreads, OutputsFollowTheForceIntoContactAndBackOut) {
   EXPECT_EQ(rest[4], 0);
   EXPECT_EQ(rest[11], 0x05);  // trigger effect off
   EXPECT_EQ(rest[13], 0);
+  EXPECT_EQ(rest[45], 0);  // the rest colour: green
   EXPECT_EQ(rest[46], 255);
+  EXPECT_EQ(rest[47], 0);
   // Only when it changed: no two consecutive writes alike.
   for (std::size_t i = 1; i < all.size(); ++i) EXPECT_NE(all[i], all[i - 1]) << i;
   const proxHidDeviceStats s = stats_of(device);
   EXPECT_EQ(s.outputsWritten, all.size());
   EXPECT_EQ(s.failedWrites, 0u);
-  // At most 25 a second: consecutive writes at least 40 ms apart (less 4 ms
-  // of arrival jitter).
+  // At most 25 a second: consecutive writes 40 ms apart on the device's
+  // thread, seen here at least 30 ms apart (arrival jitter on a loaded
+  // machine; unlimited, a change would be written every few milliseconds).
   const std::vector<double> t = bus.write_times(dev);
   ASSERT_GT(t.size(), 3u);
-  for (std::size_t i = 1; i < t.size(); ++i) EXPECT_GE(t[i] - t[i - 1], 0.036) << i;
+  for (std::size_t i = 1; i < t.size(); ++i) EXPECT_GE(t[i] - t[i - 1], 0.030) << i;
   ASSERT_OK(proxWorld_StopThreads(world));
   expect_haptic_thread_clean();
 }
@@ -191,28 +284,41 @@ TEST_F(HidThreads, ADeviceThatStopsAnsweringWritesBlocksNothingElse) {
 #endif
 }
 
-TEST_F(HidThreads, DualShock4RumbleAndLightBar) {
+// The DualShock 4's rumble and light bar: held 4 mm from the wall, then at
+// 0.7 mm, then back out.
+TEST_F(HidThreads, DualShock4RumbleAndLightBarFollowTheDistance) {
   const int dev = bus.add(device_spec("ds4v2"));
-  device = attach(0x054c, 0x09cc);
+  device = attach_direct(0x054c, 0x09cc, 0.04);
   start();
   const Bytes centre = ds4_report(128, 128, 128, 128);
-  drive_to(dev, device, ds4_report(0, 128, 128, 128), centre, kFar - 0.0235, true);
-  sleep_seconds(0.4);
-  const double felt = recorder.last_force();
+  for (const Stop& stop : {Stop{0.004, 0}, Stop{0.0007, 64}}) {
+    drive_to(dev, device, ds4_report(stop.stick, 128, 128, 128), centre, kWall + stop.gap, true);
+    sleep_seconds(0.05);
+    const double d = pose_of(device).position.x - kWall;
+    ASSERT_GT(d, 0.0) << "the tool stopped too late, inside the wall";
+    const std::array<int, 3> c = documented_colour(d);
+    light_bar_settles(dev, 6, c);
+    const std::vector<Bytes> w = bus.writes(dev);
+    ASSERT_FALSE(w.empty());
+    ASSERT_EQ(w.back().size(), 32u);
+    EXPECT_EQ(w.back()[0], 0x05);
+    EXPECT_EQ(w.back()[1], 0x03);
+    EXPECT_NEAR(w.back()[6], c[0], 1) << "red at " << d << " m";
+    EXPECT_NEAR(w.back()[7], c[1], 1) << "green at " << d << " m";
+    EXPECT_EQ(w.back()[8], c[2]) << "blue at " << d << " m";
+  }
+  const double felt = tool_force();
   std::vector<Bytes> w = bus.writes(dev);
-  ASSERT_FALSE(w.empty());
-  ASSERT_EQ(w.back().size(), 32u);
-  EXPECT_EQ(w.back()[0], 0x05);
-  EXPECT_EQ(w.back()[1], 0x03);
   EXPECT_NEAR(w.back()[5], felt / 3.0 * 255.0, 3.0);
-  EXPECT_EQ(w.back()[6], w.back()[5]);  // red
-  drive_to(dev, device, ds4_report(255, 128, 128, 128), centre, kFar - 0.005, false);
-  ASSERT_TRUE(wait_until([&] { return recorder.last_force() == 0.0; }));
+  drive_to(dev, device, ds4_report(255, 128, 128, 128), centre, kWall + 0.02, false);
+  ASSERT_TRUE(wait_until([&] { return tool_force() == 0.0; }));
   sleep_seconds(0.1);
   w = bus.writes(dev);
   EXPECT_EQ(w.back()[4], 0);
   EXPECT_EQ(w.back()[5], 0);
+  EXPECT_EQ(w.back()[6], 0);
   EXPECT_EQ(w.back()[7], 255);
+  EXPECT_EQ(w.back()[8], 0);
   ASSERT_OK(proxWorld_StopThreads(world));
   expect_haptic_thread_clean();
 }
@@ -225,6 +331,13 @@ TEST_F(HidThreads, UnplugFadesAndReconnectResumesWhereItWas) {
   drive_to(dev, device, ds4_report(0, 128, 128, 128), centre, kFar - 0.0235, true);
   sleep_seconds(0.3);
   ASSERT_GT(recorder.last_force(), 0.05);
+  // Through the recorder's callbacks the distance is not known: the light
+  // bar follows the force (docs/devices.md).
+  const std::vector<Bytes> w = bus.writes(dev);
+  ASSERT_FALSE(w.empty());
+  EXPECT_GT(w.back()[5], 0);
+  EXPECT_EQ(w.back()[6], w.back()[5]);
+  EXPECT_EQ(w.back()[7], 255 - w.back()[5]);
   const proxPose held = pose_of(device);
   bus.unplug(dev);
   ASSERT_TRUE(wait_until([&] { return !stats_of(device).connected; }));

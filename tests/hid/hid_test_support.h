@@ -1,6 +1,7 @@
-// What the HID C API tests share: the emulated bus with the real devices, a
-// scene of two 10 cm cubes (the wall at the origin, the tool beside it along
-// +x, beyond the cutoff), reports built from the layouts, and waiting.
+// What the HID C API tests share: the emulated bus with the real devices,
+// the C API tests' scene of two 10 cm cubes (the wall at the origin, the
+// tool beside it along +x, beyond the cutoff), reports built from the
+// layouts, and waiting.
 #pragma once
 
 #include <proxima/proxima.h>
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "capi/expect.h"
+#include "capi/two_cubes.h"
 #include "hid/emulated_hid.h"
 
 #include <chrono>
@@ -75,40 +77,22 @@ inline Bytes puck_buttons(std::uint8_t bits) { return {0x03, bits, 0x00}; }
 
 inline double length(const proxVec3& v) { return std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z); }
 
-// The world of two cubes; the tool starts at x = kFar (3 cm from the wall,
-// beyond the 1 cm cutoff).
-class HidScene : public ::testing::Test {
+// The scene's cutoff and safety distance (m): capi_test::TwoCubes's.
+inline constexpr double kCutoff = 0.01, kSafety = 0.001;
+
+// The C API's world of two cubes; the tool starts at x = kFar (3 cm from
+// the wall, beyond the 1 cm cutoff).
+class HidScene : public capi_test::TwoCubes {
  protected:
   static constexpr double kFar = 0.13;
 
   void SetUp() override {
-    proxWorldDef def = proxDefaultWorldDef();
-    def.cutoff = 0.01;
-    def.force.safetyDistance = 0.001;
-    def.force.decayLength = 0.002;
-    ASSERT_OK(proxCreateWorld(&def, &world));
-    const double p[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
-    for (double v : p) positions.push_back(0.1 * v);
-    proxMeshDef md = proxDefaultMeshDef();
-    md.positions = positions.data();
-    md.vertexCount = 8;
-    md.indices = indices.data();
-    md.triangleCount = 12;
-    ASSERT_OK(proxWorld_CreateMesh(world, &md, &mesh));
-    proxBodyDef bd = proxDefaultBodyDef();
-    bd.mesh = mesh;
-    ASSERT_OK(proxWorld_CreateBody(world, &bd, &wall));
-    bd.type = PROX_BODY_TOOL;
-    bd.pose = start_pose();
-    bd.referencePoint = {0.05, 0.05, 0.05};
-    ASSERT_OK(proxWorld_CreateBody(world, &bd, &tool));
+    ASSERT_NO_FATAL_FAILURE(create_scene(kFar));
     ASSERT_OK(proxWorld_Step(world));
   }
   void TearDown() override {
-    if (proxWorld_IsValid(world)) {
-      proxWorld_StopThreads(world);
-      EXPECT_OK(proxDestroyWorld(world));
-    }
+    if (proxWorld_IsValid(world)) proxWorld_StopThreads(world);
+    TwoCubes::TearDown();
   }
 
   static proxPose start_pose() { return {{kFar, 0, 0}, {1, 0, 0, 0}}; }
@@ -134,12 +118,6 @@ class HidScene : public ::testing::Test {
   }
 
   EmulatedHidBus bus;
-  proxWorldId world{};
-  proxMeshId mesh{};
-  proxBodyId wall{}, tool{};
-  std::vector<double> positions;
-  std::vector<uint32_t> indices = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
-                                   2, 3, 7, 2, 7, 6, 1, 2, 6, 1, 6, 5, 0, 4, 7, 0, 7, 3};
 };
 
 }  // namespace prox::test

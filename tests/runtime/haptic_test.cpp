@@ -56,7 +56,14 @@ TEST(HapticEvaluation, MatchesTheEngineAndFollowsTheHand) {
     const Vec3 ref_local = bunny->centre;
     const ContactSnapshot s = snapshot_of(r.lmds, pose_b);
     const Wrench engine = tool_wrench(force, r.lmds, pose_b.apply(ref_local));
-    const Wrench haptic = evaluate_contacts(force, s, pose_b, ref_local);
+    double closest = -1.0;
+    const Wrench haptic = evaluate_contacts(force, s, pose_b, ref_local, &closest);
+    // The closest distance at the tracked pose: the least of the engine's
+    // exact LMD distances.
+    double least = std::numeric_limits<double>::infinity();
+    for (const LmdPair& p : r.lmds) least = std::min(least, p.distance);
+    EXPECT_NEAR(closest, least, 1e-12);
+    EXPECT_NEAR(closest_tracked_distance(s), least, 1e-15);
     EXPECT_LE(length(haptic.force - engine.force), 1e-12 * (1.0 + length(engine.force)));
     EXPECT_LE(length(haptic.torque - engine.torque), 1e-12 * (1.0 + length(engine.torque)));
 
@@ -68,7 +75,14 @@ TEST(HapticEvaluation, MatchesTheEngineAndFollowsTheHand) {
     PairState fresh_state;
     find_lmds(make_query(*bunny, Pose{}, *bunny, moved, force.cutoff), Method::Precise, fresh_state, fresh);
     const Wrench truth = tool_wrench(force, fresh.lmds, moved.apply(ref_local));
-    const Wrench followed = evaluate_contacts(force, s, moved, ref_local);
+    double followed_closest = -1.0;
+    const Wrench followed = evaluate_contacts(force, s, moved, ref_local, &followed_closest);
+    // It follows the hand too: against the fresh search's least distance
+    // (10 um in, first order).
+    double fresh_least = std::numeric_limits<double>::infinity();
+    for (const LmdPair& p : fresh.lmds) fresh_least = std::min(fresh_least, p.distance);
+    EXPECT_LT(followed_closest, closest);
+    EXPECT_NEAR(followed_closest, fresh_least, 1e-6);
     // The stale wrench (what a loop without re-evaluation would render)
     // against the followed one: following must be much closer to the truth.
     const double stale_error = length(engine.force - truth.force);
@@ -97,9 +111,29 @@ TEST(HapticEvaluation, PushedThroughTheTangentPlaneGivesFullForceNotNegative) {
   s.sequence = 1;
   const ForceSettings force = hard_force_settings();
   const Pose through{glm::dmat3(1.0), Vec3(0.0, 0.0, -0.003)};  // the point now 2 mm below the plane
-  const Wrench w = evaluate_contacts(force, s, through, Vec3(0.0));
+  double closest = -1.0;
+  const Wrench w = evaluate_contacts(force, s, through, Vec3(0.0), &closest);
   EXPECT_NEAR(w.force.z, force.max_force, 1e-12);
   EXPECT_EQ(w.force.x, 0.0);
+  EXPECT_EQ(closest, 0.0) << "pushed through is the closest there is, never negative";
+}
+
+TEST(HapticEvaluation, ClosestDistanceOfContactsAndOfNone) {
+  ContactSnapshot s;
+  s.sequence = 1;
+  const ForceSettings force = hard_force_settings();
+  double closest = 0.0;
+  evaluate_contacts(force, s, Pose{}, Vec3(0.0), &closest);
+  EXPECT_EQ(closest, std::numeric_limits<double>::infinity()) << "no contacts";
+  EXPECT_EQ(closest_tracked_distance(s), std::numeric_limits<double>::infinity());
+  // Two planes under the tool, 3 mm and 2 mm away along their normals; the
+  // tool then raised 0.5 mm: 3.5 and 2.5 mm.
+  s.contacts.push_back({Vec3(0.0, 0.0, 0.003), Vec3(0.0), Vec3(0.0, 0.0, 1.0), 0.003});
+  s.contacts.push_back({Vec3(0.01, 0.0, 0.0), Vec3(0.01, 0.0, -0.002), Vec3(0.0, 0.0, 1.0), 0.002});
+  const Pose raised{glm::dmat3(1.0), Vec3(0.0, 0.0, 0.0005)};
+  evaluate_contacts(force, s, raised, Vec3(0.0), &closest);
+  EXPECT_NEAR(closest, 0.0025, 1e-15);
+  EXPECT_EQ(closest_tracked_distance(s), 0.002);  // at the pose they were tracked at
 }
 
 TEST(PoseDisplacement, TranslationPlusAngleTimesRadius) {
@@ -209,8 +243,8 @@ TEST(ScriptedDevice, RecordsWhatItIsHanded) {
   DevicePose pose{};
   ASSERT_TRUE(d.read_pose(d.user, &pose));
   EXPECT_EQ(pose.rotation[0], 1.0);
-  const DeviceWrench w1{{1.0, 0.0, 0.0}, {0.0, 0.0, 0.1}, false};
-  const DeviceWrench w2{{1.0, 0.5, 0.0}, {0.0, 0.0, 0.0}, false};
+  const DeviceWrench w1{{1.0, 0.0, 0.0}, {0.0, 0.0, 0.1}, false, kNoContact, 0.0, 0.0};
+  const DeviceWrench w2{{1.0, 0.5, 0.0}, {0.0, 0.0, 0.0}, false, kNoContact, 0.0, 0.0};
   d.write_wrench(d.user, &w1);
   d.write_wrench(d.user, &w2);
   const ScriptedRecord r = device.record();

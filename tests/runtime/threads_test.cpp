@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <functional>
 #include <limits>
@@ -62,10 +63,15 @@ struct FaultyDevice {
   static void write(void* user, const DeviceWrench* w) {
     auto* self = static_cast<FaultyDevice*>(user);
     self->inner.write_wrench(self->inner.user, w);
+    self->closest.store(w->closest_distance, std::memory_order_relaxed);
+    self->safety_distance.store(w->safety_distance, std::memory_order_relaxed);
+    self->cutoff.store(w->cutoff, std::memory_order_relaxed);
   }
 
   Device inner;
   std::atomic<int> fault{None};
+  // What the last wrench said of the distances.
+  std::atomic<double> closest{-1.0}, safety_distance{-1.0}, cutoff{-1.0};
 };
 
 double length(const Vec3& v) { return glm::length(v); }
@@ -209,6 +215,31 @@ TEST_F(ThreadsTest, StalledTrackerFadesOutAndRecovers) {
   EXPECT_GT(threads.haptic_counters().stale_ticks, 0u);
   threads.stall(Role::Local, false);
   EXPECT_TRUE(settled());
+  expect_safe_output();
+}
+
+// The device is told the closest distance of the contacts (at rest, the
+// least of the engine's LMD distances there) with the world's safety
+// distance and cutoff; a stalled tracker, whose stale contacts fade the
+// force out, does not make it "no contact"; stopping does.
+TEST_F(ThreadsTest, TheDeviceIsToldTheClosestDistanceAndAStallKeepsIt) {
+  FaultyDevice* device = nullptr;
+  start_and_settle(device);
+  double least = std::numeric_limits<double>::infinity();
+  for (const LmdPair& p : expected_.lmds) least = std::min(least, p.distance);
+  ASSERT_TRUE(wait_until([&] { return std::fabs(device->closest.load() - least) <= 1e-9; }))
+      << "told " << device->closest.load() << " m, the LMDs' least is " << least << " m";
+  EXPECT_EQ(device->safety_distance.load(), world_settings_.force.safety_distance);
+  EXPECT_EQ(device->cutoff.load(), world_settings_.cutoff);
+  Threads& threads = *world_->threads();
+  threads.stall(Role::Local, true);
+  ASSERT_TRUE(faded_out());
+  EXPECT_GT(threads.haptic_counters().stale_ticks, 0u);
+  EXPECT_NEAR(device->closest.load(), least, 1e-9) << "a stall is not the contact going away";
+  threads.stall(Role::Local, false);
+  EXPECT_TRUE(settled());
+  world_->stop_threads();
+  EXPECT_EQ(device->closest.load(), std::numeric_limits<double>::infinity()) << "stopped: no contact";
   expect_safe_output();
 }
 

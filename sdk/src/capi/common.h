@@ -82,6 +82,12 @@ runtime::World& world_of(proxWorldId id, const char* what = "world");
 void release_stream_devices(proxWorldId world);
 // Whether a device def is a streamed device's (its callbacks are Proxima's).
 bool is_stream_device_def(const proxDeviceDef& def);
+// A built-in device's def as Proxima made it (both callbacks its own): the
+// runtime's device it stands for, which a tool then holds directly, so the
+// haptic loop hands it the whole DeviceWrench (the closest distance too,
+// which proxWrench does not carry). False for any other def.
+bool stream_runtime_device(const proxDeviceDef& def, runtime::Device& out);
+bool hid_runtime_device(const proxDeviceDef& def, runtime::Device& out);
 // HID devices (hid_device.cpp, built with PROX_WITH_HIDAPI): whether a def
 // is one's, whether that device belongs to `world`, and closing a world's
 // devices before the world is destroyed, with its threads stopped.
@@ -173,6 +179,16 @@ inline Vec3 to_vec(const proxVec3& v, const std::string& name) {
 }
 
 inline proxVec3 to_c(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+// A wrench that came through the C callbacks: no distance is known.
+inline runtime::DeviceWrench device_wrench_of(const proxWrench& w) {
+  return {{w.force.x, w.force.y, w.force.z},
+          {w.torque.x, w.torque.y, w.torque.z},
+          w.clipped != 0,
+          runtime::kUnknownDistance,
+          0.0,
+          0.0};
+}
 
 inline Pose to_pose(const proxPose& p, const std::string& name) {
   const Vec3 t = to_vec(p.position, name + ".position");

@@ -41,8 +41,7 @@ struct ScriptedTrampoline {
     return 1;
   }
   static void write(void* user, const proxWrench* w) {
-    static_cast<runtime::ScriptedDevice*>(user)->write_wrench(
-        {{w->force.x, w->force.y, w->force.z}, {w->torque.x, w->torque.y, w->torque.z}, w->clipped != 0});
+    static_cast<runtime::ScriptedDevice*>(user)->write_wrench(device_wrench_of(*w));
   }
 };
 
@@ -95,8 +94,24 @@ proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def) {
            "def is a HID device of another world, or a closed one (a device can hold only its own world's "
            "tools)");
 #endif
-    auto adapter = std::make_shared<DeviceAdapter>(*def);
+    // Proxima's own devices, as they came, are held directly (and are
+    // handed the closest distance); any other def through its callbacks.
     runtime::Device d;
+    if (def->readPose == &ScriptedTrampoline::read && def->writeWrench == &ScriptedTrampoline::write) {
+      w->set_device(h, static_cast<runtime::ScriptedDevice*>(def->userData)->device());
+      return;
+    }
+    if (stream_runtime_device(*def, d)) {
+      w->set_device(h, d);
+      return;
+    }
+#if PROX_WITH_HIDAPI
+    if (hid_runtime_device(*def, d)) {
+      w->set_device(h, d);
+      return;
+    }
+#endif
+    auto adapter = std::make_shared<DeviceAdapter>(*def);
     d.read_pose = &DeviceAdapter::read;
     d.write_wrench = def->writeWrench ? &DeviceAdapter::write : nullptr;
     d.user = adapter.get();

@@ -43,8 +43,7 @@ struct HidTrampoline {
     return 1;
   }
   static void write(void* user, const proxWrench* w) {
-    static_cast<devices::HidDevice*>(user)->write_wrench(
-        {{w->force.x, w->force.y, w->force.z}, {w->torque.x, w->torque.y, w->torque.z}, w->clipped != 0});
+    static_cast<devices::HidDevice*>(user)->write_wrench(device_wrench_of(*w));
   }
 };
 
@@ -66,6 +65,12 @@ void need_range(double v, double lo, double hi, const char* name) {
 namespace prox::capi {
 
 bool is_hid_device_def(const proxDeviceDef& def) { return def.readPose == &HidTrampoline::read; }
+
+bool hid_runtime_device(const proxDeviceDef& def, runtime::Device& out) {
+  if (def.readPose != &HidTrampoline::read || def.writeWrench != &HidTrampoline::write) return false;
+  out = static_cast<devices::HidDevice*>(def.userData)->device();
+  return true;
+}
 
 bool hid_device_of_world(const void* device, proxWorldId world) {
   std::lock_guard<std::mutex> lock(g_hid_mutex);

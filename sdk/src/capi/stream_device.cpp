@@ -69,8 +69,7 @@ struct StreamTrampoline {
     return 1;
   }
   static void write(void* user, const proxWrench* w) {
-    static_cast<runtime::StreamDevice*>(user)->write_wrench(
-        {{w->force.x, w->force.y, w->force.z}, {w->torque.x, w->torque.y, w->torque.z}, w->clipped != 0});
+    static_cast<runtime::StreamDevice*>(user)->write_wrench(device_wrench_of(*w));
   }
 };
 
@@ -100,6 +99,12 @@ void check_sample(const proxPose& pose, double time, runtime::StreamSample& out)
 namespace prox::capi {
 
 bool is_stream_device_def(const proxDeviceDef& def) { return def.readPose == &StreamTrampoline::read; }
+
+bool stream_runtime_device(const proxDeviceDef& def, runtime::Device& out) {
+  if (def.readPose != &StreamTrampoline::read || def.writeWrench != &StreamTrampoline::write) return false;
+  out = static_cast<runtime::StreamDevice*>(def.userData)->device();
+  return true;
+}
 
 void release_stream_devices(proxWorldId world) {
   const std::uint64_t key = world_key(world);

@@ -226,9 +226,13 @@ void HidDevice::run() {
 void HidDevice::write_outputs(double now) {
   if (now - last_output_time_ < 1.0 / settings_.output_rate) return;
   const runtime::DeviceWrench w = wrench_.load();
-  double force = std::sqrt(w.force[0] * w.force[0] + w.force[1] * w.force[1] + w.force[2] * w.force[2]);
-  if (!std::isfinite(force)) force = 0.0;  // the gate rules it out; never send one anyway
-  const OutputReport r = build_output(found_.profile, force, settings_.output);
+  OutputInput in;
+  in.force = std::sqrt(w.force[0] * w.force[0] + w.force[1] * w.force[1] + w.force[2] * w.force[2]);
+  if (!std::isfinite(in.force)) in.force = 0.0;  // the gate rules it out; never send one anyway
+  in.closest_distance = w.closest_distance;      // +inf: none; NaN: not known
+  in.safety_distance = w.safety_distance;
+  in.cutoff = w.cutoff;
+  const OutputReport r = build_output(found_.profile, in, settings_.output);
   if (r.size == 0 || r == last_output_) return;
   last_output_time_ = now;
   if (hid_write(handle_, r.bytes, r.size) == int(r.size)) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace prox::devices {
 
@@ -15,11 +16,41 @@ std::uint8_t output_level(double force, double full) {
   return std::uint8_t(std::lround(t * 255.0));
 }
 
+namespace {
+
+std::uint8_t blend(std::uint8_t from, std::uint8_t to, double t) {
+  return std::uint8_t(std::lround(double(from) + (double(to) - double(from)) * t));
+}
+
+}  // namespace
+
+Rgb light_bar_colour(const OutputInput& in, const OutputSettings& s) {
+  const double d = in.closest_distance;
+  if (std::isnan(d)) {
+    const std::uint8_t level = output_level(in.force, s.rumble_force);
+    return {level, std::uint8_t(255 - level), 0};
+  }
+  if (d <= in.safety_distance) return kContactColour;
+  if (!(d < in.cutoff)) return kRestColour;  // beyond the cutoff, or no contact
+  // safety < d < cutoff, so the span is positive.
+  const double t = (in.cutoff - d) / (in.cutoff - in.safety_distance);
+  return {blend(kRestColour.r, kWarningColour.r, t), blend(kRestColour.g, kWarningColour.g, t),
+          blend(kRestColour.b, kWarningColour.b, t)};
+}
+
 OutputReport build_output(HidProfile profile, double force, const OutputSettings& s) {
+  OutputInput in;
+  in.force = force;
+  in.closest_distance = std::numeric_limits<double>::quiet_NaN();
+  return build_output(profile, in, s);
+}
+
+OutputReport build_output(HidProfile profile, const OutputInput& in, const OutputSettings& s) {
   OutputReport r;
+  const double force = in.force;
   const std::uint8_t rumble = output_level(force, s.rumble_force);
-  // The light bar goes from green at rest to red at full rumble force.
-  const std::uint8_t red = rumble, green = std::uint8_t(255 - rumble);
+  const Rgb colour = light_bar_colour(in, s);
+  const std::uint8_t red = colour.r, green = colour.g, blue = colour.b;
   switch (profile) {
     case HidProfile::DualShock4:
       // Report 0x05 (USB, 32 bytes): flags motors | light bar colour; weak
@@ -29,7 +60,7 @@ OutputReport build_output(HidProfile profile, double force, const OutputSettings
       r.bytes[1] = 0x01 | 0x02;
       r.bytes[4] = rumble;
       r.bytes[5] = rumble;
-      r.bytes[6] = red, r.bytes[7] = green, r.bytes[8] = 0;
+      r.bytes[6] = red, r.bytes[7] = green, r.bytes[8] = blue;
       break;
     case HidProfile::DualSense: {
       // Report 0x02 (USB, 48 bytes): flags rumble (0x01 | 0x02) and right
@@ -49,7 +80,7 @@ OutputReport build_output(HidProfile profile, double force, const OutputSettings
         r.bytes[12] = 0x00;
         r.bytes[13] = resistance;  // ... of this strength
       }
-      r.bytes[45] = red, r.bytes[46] = green, r.bytes[47] = 0;
+      r.bytes[45] = red, r.bytes[46] = green, r.bytes[47] = blue;
       break;
     }
     case HidProfile::SpaceMouseSplit:

@@ -2,6 +2,7 @@
 // caller's pointer, called from the haptic thread only (docs/threading.md).
 #pragma once
 
+#include <limits>
 #include <memory>
 
 namespace prox::runtime {
@@ -11,10 +12,24 @@ struct DevicePose {
   double rotation[4];  // unit quaternion w, x, y, z
 };
 
+// No contact: the closest distance of an empty contact set.
+inline constexpr double kNoContact = std::numeric_limits<double>::infinity();
+// Not known: a wrench that came through the C API's proxWrench, which
+// carries no distance.
+inline constexpr double kUnknownDistance = std::numeric_limits<double>::quiet_NaN();
+
 struct DeviceWrench {
   double force[3];   // N, world frame
   double torque[3];  // N m, about the tool's reference point, world frame
   bool limited;      // the safety gate changed what the contacts asked for
+  // The closest distance of the tool's contact set this tick (m): re-measured
+  // at the device pose for a free tool, the proxy's for a constrained one;
+  // 0 when pushed through; kNoContact when there is none; the last trusted
+  // tick's when the contacts are not trusted this tick; kUnknownDistance
+  // when not known.
+  double closest_distance = kNoContact;
+  // The world's, for a device that maps the distance (m).
+  double safety_distance = 0.0, cutoff = 0.0;
 };
 
 struct Device {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace prox::runtime {
 namespace {
@@ -55,16 +56,25 @@ std::uint64_t snapshot_checksum(const ContactSnapshot& snapshot) {
 }
 
 Wrench evaluate_contacts(const ForceSettings& settings, const ContactSnapshot& snapshot, const Pose& pose,
-                         const Vec3& reference_point_local) {
+                         const Vec3& reference_point_local, double* closest) {
   WrenchSum sum(pose.apply(reference_point_local));
+  double least = std::numeric_limits<double>::infinity();
   for (const HapticContact& c : snapshot.contacts) {
     const Vec3 b = pose.apply(c.tool_point_local);
     // Closer than zero along the normal means the hand has pushed through
     // the tangent plane since tracking: full force, never a negative one.
     const double d = std::max(0.0, glm::dot(b - c.other_point, c.normal));
     sum.add(settings, b, c.normal, d, c.weight);
+    least = std::min(least, d);
   }
+  if (closest) *closest = least;
   return sum.finish(settings);
+}
+
+double closest_tracked_distance(const ContactSnapshot& snapshot) {
+  double least = std::numeric_limits<double>::infinity();
+  for (const HapticContact& c : snapshot.contacts) least = std::min(least, std::max(0.0, c.distance));
+  return least;
 }
 
 double pose_displacement(const Pose& from, const Pose& to, const Vec3& reference_point_local, double radius) {

@@ -48,9 +48,15 @@ std::uint64_t snapshot_checksum(const ContactSnapshot& snapshot);
 // The force and torque the snapshot's contacts give at the tool pose `pose`:
 // each contact's separation is re-measured along its normal (first order in
 // the motion since tracking), so the force follows the hand between local
-// updates; at the snapshot's own pose it is exactly tool_wrench's.
+// updates; at the snapshot's own pose it is exactly tool_wrench's. When
+// `closest` is given it receives the least of those separations (0 when
+// pushed through, +infinity with no contacts).
 Wrench evaluate_contacts(const ForceSettings& settings, const ContactSnapshot& snapshot, const Pose& pose,
-                         const Vec3& reference_point_local);
+                         const Vec3& reference_point_local, double* closest = nullptr);
+
+// The least distance the snapshot's contacts were tracked at (+infinity with
+// none): a constrained tool's, whose contacts are its proxy's.
+double closest_tracked_distance(const ContactSnapshot& snapshot);
 
 // How far the contacts may be trusted from the pose they were tracked at:
 // the largest distance any point of the tool within `radius` of its

@@ -327,7 +327,12 @@ void Threads::haptic_main() {
     for (auto& tool : tools_) {
       const Wrench w = tool->filter.step(Wrench{}, false, period);
       if (tool->device.write_wrench) {
-        const DeviceWrench out{{w.force.x, w.force.y, w.force.z}, {w.torque.x, w.torque.y, w.torque.z}, true};
+        const DeviceWrench out{{w.force.x, w.force.y, w.force.z},
+                               {w.torque.x, w.torque.y, w.torque.z},
+                               true,
+                               kNoContact,
+                               world_.settings_.force.safety_distance,
+                               world_.settings_.cutoff};
         tool->device.write_wrench(tool->device.user, &out);
       }
       tool->wrench.store({w});
@@ -367,23 +372,35 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
           settings_.trust_distance)
     count(untrusted_ticks_), valid = false;
   Wrench target;
+  // A tick whose contacts are not trusted (stale, left behind, no pose this
+  // tick) tells the device the last trusted distance: a stall of the
+  // tracking thread is not the contact going away.
+  double closest = snapshot.sequence > 0 ? tool.closest : kNoContact;
   if (tool.constrained) {
     // The spring-damper from the device pose to the proxy the snapshot was
     // tracked at.
     const coupling::Twist offset =
         coupling::twist_between(sample.pose, snapshot.tool_pose, tool.reference_local);
     const coupling::Twist& rate = tool.offset_rate.update(offset, valid ? dt : 0.0);
-    if (valid)
+    if (valid) {
       target = coupling::coupling_wrench(tool.coupling, sample.pose, snapshot.tool_pose, tool.reference_local,
                                          rate);
+      closest = closest_tracked_distance(snapshot);
+    }
   } else if (valid) {
-    target = evaluate_contacts(world_.settings_.force, snapshot, sample.pose, tool.reference_local);
+    target = evaluate_contacts(world_.settings_.force, snapshot, sample.pose, tool.reference_local, &closest);
   }
+  tool.closest = closest;
   bool limited = false;
   const Wrench w = tool.filter.step(target, valid, dt, &limited);
   if (limited) count(limited_ticks_);
   if (tool.device.write_wrench) {
-    const DeviceWrench out{{w.force.x, w.force.y, w.force.z}, {w.torque.x, w.torque.y, w.torque.z}, limited};
+    const DeviceWrench out{{w.force.x, w.force.y, w.force.z},
+                           {w.torque.x, w.torque.y, w.torque.z},
+                           limited,
+                           closest,
+                           world_.settings_.force.safety_distance,
+                           world_.settings_.cutoff};
     tool.device.write_wrench(tool.device.user, &out);
   }
   tool.wrench.store({w});

@@ -181,6 +181,7 @@ class Threads {
     std::uint64_t published_version = 0;        // global's own: the tool pose version last handed over
     std::vector<coupling::Obstacle> obstacles;  // local's own
     coupling::OffsetRate offset_rate;           // haptic's own
+    double closest = kNoContact;                // haptic's own: the last trusted tick's, for the device
   };
 
   void haptic_main();
