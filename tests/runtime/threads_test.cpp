@@ -373,6 +373,9 @@ TEST_F(ThreadsTest, StreamedDeviceDrivesTheToolWithoutAllocating) {
   const DeviceWrench w = stream.wrench();
   EXPECT_TRUE(std::isfinite(w.force[0] + w.force[1] + w.force[2]));
   EXPECT_EQ(prox::testing::marked_allocations(), 0) << "the haptic thread or the pusher allocated";
+  // The devices are this test's locals: stop the haptic thread (which
+  // writes to them until it stops) before they go, not in TearDown.
+  world_->stop_threads();
 }
 
 TEST_F(ThreadsTest, BadSettingsAreRefusedByName) {
