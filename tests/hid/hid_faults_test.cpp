@@ -6,8 +6,10 @@
 #include "hid/hid_test_support.h"
 #include "support/marked_threads.h"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <memory>
 #include <new>
@@ -136,6 +138,44 @@ class HidThreads : public HidScene {
     bus.send(dev, rest);
     EXPECT_TRUE(bus.drain(dev, 5.0));
   }
+  // Brings the tool down to within `gap` of the wall's face (x at most
+  // kWall + gap, and more than a tenth of `gap` from the face) with the
+  // left stick of `report(stick)`, `rest` between moves. Closed loop, since
+  // how late the device reads a report is up to the scheduler: each move
+  // covers half the distance left, at a speed that a release half a second
+  // late overshoots by at most that half plus 0.8 `gap`; a move that still
+  // ends too close (a report read seconds late on a loaded machine) backs
+  // the tool out to twice the gap and tries again, and `retreated_at` is
+  // then the count of writes before the last retreat ended. `speed` is the
+  // device's linearSpeed; the stick follows the profile's dead zone (0.1)
+  // and squared response.
+  template <typename Report>
+  void approach_wall(int dev, proxHidDeviceId d, Report report, const Bytes& rest, double gap, double speed) {
+    constexpr double kLate = 0.5;  // s
+    const double target = kWall + gap;
+    auto stick_for = [&](double v) {  // deflection m gives speed ((m - 0.1) / 0.9)^2
+      const double m = 0.1 + 0.9 * std::sqrt(std::clamp(v / speed, 0.0, 1.0));
+      return m * 127.5;
+    };
+    for (int move = 0; move < 40; ++move) {
+      const double at = pose_of(d).position.x;
+      approach_log += "at " + std::to_string(at) + "\n";
+      if (at <= kWall + 0.1 * gap) {  // too close, or through: back out
+        drive_to(dev, d, report(static_cast<std::uint8_t>(std::ceil(128.0 + stick_for(speed / 4)))), rest,
+                 kWall + 2.0 * gap, false);
+        retreated_at = bus.writes(dev).size();
+        continue;
+      }
+      const double left = at - target;
+      if (left <= 0.0) return;
+      const double stop_at = left > 0.1 * gap ? target + 0.5 * left : target;
+      const double v = std::min(speed, (stop_at - target + 0.8 * gap) / kLate);
+      // Towards the wall is below the centre (128).
+      drive_to(dev, d, report(static_cast<std::uint8_t>(std::max(0.0, std::floor(128.0 - stick_for(v))))),
+               rest, stop_at, true);
+    }
+    ADD_FAILURE() << "the tool did not reach " << gap << " m from the wall:\n" << approach_log;
+  }
   void expect_haptic_thread_clean() {
     EXPECT_GT(recorder.poses.load() + recorder.no_pose.load(), 20);  // it ran
     EXPECT_EQ(prox::testing::marked_allocations(), 0) << "the haptic thread allocated";
@@ -152,6 +192,8 @@ class HidThreads : public HidScene {
 
   static constexpr double kWall = 0.1;  // the wall's face: the tool's gap is its x less this
   static constexpr proxPose kAside{{-1.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}};
+  std::string approach_log;  // where each move of approach_wall began
+  std::size_t retreated_at = 0;
   Recorder recorder;
   proxHidDeviceId device{};
   proxBodyId aside{};
@@ -163,12 +205,6 @@ class HidThreads : public HidScene {
 // docs/devices.md documents: green at rest (no contact, or d at or beyond
 // the cutoff), red at or inside the safety distance, and in between green
 // blended linearly towards amber (255, 160, 0) as d falls from the cutoff.
-// Where the tool is driven to: a gap to the wall, with the left stick's x.
-struct Stop {
-  double gap;
-  std::uint8_t stick;
-};
-
 static std::array<int, 3> documented_colour(double d) {
   if (d <= kSafety) return {255, 0, 0};
   if (d >= kCutoff) return {0, 255, 0};
@@ -190,14 +226,12 @@ TEST_F(HidThreads, OutputsFollowTheForceAndTheDistanceIntoContactAndBackOut) {
   sleep_seconds(0.3);
   EXPECT_TRUE(bus.writes(dev).empty()) << "outputs while far from everything";
   const Bytes centre = dualsense_report(128, 128, 128, 128);
-  // The last stop at a fifth of the speed (the stick half way: 0.45 past
-  // the dead zone, squared), so that stopping late does not take the tool
-  // through the wall's face.
-  for (const Stop& stop : {Stop{0.008, 0}, Stop{0.005, 0}, Stop{0.002, 0}, Stop{0.0007, 64}}) {
-    drive_to(dev, device, dualsense_report(stop.stick, 128, 128, 128), centre, kWall + stop.gap, true);
+  for (const double gap : {0.008, 0.005, 0.002, 0.0007}) {
+    approach_wall(
+        dev, device, [](std::uint8_t x) { return dualsense_report(x, 128, 128, 128); }, centre, gap, 0.04);
     sleep_seconds(0.05);
     const double d = pose_of(device).position.x - kWall;  // the cubes' faces are parallel
-    ASSERT_GT(d, 0.0) << "the tool stopped too late, inside the wall";
+    ASSERT_GT(d, 0.0) << "the tool stopped too late, inside the wall:\n" << approach_log;
     const std::array<int, 3> c = documented_colour(d);
     light_bar_settles(dev, 45, c);
     const std::vector<Bytes> w = bus.writes(dev);
@@ -210,8 +244,11 @@ TEST_F(HidThreads, OutputsFollowTheForceAndTheDistanceIntoContactAndBackOut) {
   EXPECT_GT(felt, 0.05);
   const std::vector<Bytes> in = bus.writes(dev);
   ASSERT_FALSE(in.empty());
+  // Monotone since the last retreat (approach_wall), if there was one.
+  ASSERT_LE(retreated_at, in.size());
   int last = 0, last_red = 0, last_green = 255;
-  for (const Bytes& w : in) {
+  for (std::size_t i = retreated_at; i < in.size(); ++i) {
+    const Bytes& w = in[i];
     ASSERT_EQ(w.size(), 48u);
     ASSERT_EQ(w[0], 0x02);
     EXPECT_GE(int(w[3]), last) << "the rumble fell while approaching";
@@ -291,11 +328,12 @@ TEST_F(HidThreads, DualShock4RumbleAndLightBarFollowTheDistance) {
   device = attach_direct(0x054c, 0x09cc, 0.04);
   start();
   const Bytes centre = ds4_report(128, 128, 128, 128);
-  for (const Stop& stop : {Stop{0.004, 0}, Stop{0.0007, 64}}) {
-    drive_to(dev, device, ds4_report(stop.stick, 128, 128, 128), centre, kWall + stop.gap, true);
+  for (const double gap : {0.004, 0.0007}) {
+    approach_wall(
+        dev, device, [](std::uint8_t x) { return ds4_report(x, 128, 128, 128); }, centre, gap, 0.04);
     sleep_seconds(0.05);
     const double d = pose_of(device).position.x - kWall;
-    ASSERT_GT(d, 0.0) << "the tool stopped too late, inside the wall";
+    ASSERT_GT(d, 0.0) << "the tool stopped too late, inside the wall:\n" << approach_log;
     const std::array<int, 3> c = documented_colour(d);
     light_bar_settles(dev, 6, c);
     const std::vector<Bytes> w = bus.writes(dev);
