@@ -1,8 +1,9 @@
 // Flat distance fields (docs/patches.md, docs/benchmarks.md "Flat fields"):
 // two parallel sheets 1 mm apart and Suzanne against itself moved 1 cm, the
-// precise query with patches off and on side by side in one run. Reports the
-// median global search, reduction and merge times and the contacts handed
-// on. Usage: proxima_patches_bench [--runs N]
+// precise query with patches off and on, and on with the leaf budget of the
+// bounded search, side by side in one run. Reports the median global search,
+// reduction and merge times and the contacts handed on.
+// Usage: proxima_patches_bench [--runs N]
 #include "contact/proximity.h"
 #include "io/gltf.h"
 
@@ -73,10 +74,21 @@ double median(std::vector<double> v) {
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
+// Patches off and on, without a leaf budget, then on with the default
+// budget and with a tenth of it: the bounded search.
+struct Variant {
+  const char* name;
+  bool patches;
+  std::uint64_t leaf_budget;
+};
+
 void run(const char* name, const Body& a, const Body& b, const Pose& pose_b, double cutoff, int runs) {
-  for (const bool patches : {false, true}) {
+  const std::uint64_t budget = PatchSettings::kDefaultLeafBudget;
+  for (const Variant v : {Variant{"off", false, 0}, Variant{"on", true, 0}, Variant{"budget", true, budget},
+                          Variant{"budget/10", true, budget / 10}}) {
     PairQuery q{&a.mesh, a.snch.get(), Pose{}, &b.mesh, b.snch.get(), pose_b, cutoff};
-    if (!patches) q.patches.radius_over_cutoff = 0.0;
+    if (!v.patches) q.patches.radius_over_cutoff = 0.0;
+    q.patches.leaf_budget = v.leaf_budget;
     PairState state;
     std::vector<double> global, reduction, merge;
     ProximityResult r;
@@ -90,11 +102,12 @@ void run(const char* name, const Body& a, const Body& b, const Pose& pose_b, dou
       merge.push_back(total - r.global.seconds - red);
     }
     std::printf(
-        "%-14s patches %-3s  candidates %7u  LMDs %6u  contacts %6zu  largest %4u  crossing pairs %5llu  "
-        "global %8.2f ms  reduction %8.2f ms  merge %6.2f ms\n",
-        name, patches ? "on" : "off", r.candidates, r.patches.lmds_in, r.lmds.size(), r.patches.largest,
-        static_cast<unsigned long long>(r.global.intersecting_pairs), 1e3 * median(global),
-        1e3 * median(reduction), 1e3 * median(merge));
+        "%-14s %-9s  leaf pairs %7llu  cut %5llu  candidates %7u  LMDs %6u  contacts %6zu  largest %5u  "
+        "crossing pairs %5llu  min distance %.9g  global %8.2f ms  reduction %8.2f ms  merge %6.2f ms\n",
+        name, v.name, static_cast<unsigned long long>(r.global.leaf_pairs),
+        static_cast<unsigned long long>(r.global.cut_node_pairs), r.candidates, r.patches.lmds_in,
+        r.lmds.size(), r.patches.largest, static_cast<unsigned long long>(r.global.intersecting_pairs),
+        r.min_distance, 1e3 * median(global), 1e3 * median(reduction), 1e3 * median(merge));
   }
 }
 
@@ -114,6 +127,8 @@ int main(int argc, char** argv) {
   std::printf("median of %d runs each, the precise method (search, two reduction passes, patches)\n", runs);
   const auto floor = sheet(71, 0.1, false), tool = sheet(71, 0.1, true);
   run("two sheets", *floor, *tool, Pose{glm::dmat3(1.0), Vec3(0.0, 0.0, 0.001)}, 0.005, runs);
+  const auto fine_floor = sheet(200, 0.1, false), fine_tool = sheet(200, 0.1, true);
+  run("fine sheets", *fine_floor, *fine_tool, Pose{glm::dmat3(1.0), Vec3(0.0, 0.0, 0.001)}, 0.005, runs);
   const auto s = suzanne();
   run("Suzanne +1 cm", *s, *s, Pose{glm::dmat3(1.0), Vec3(0.0, 0.0, 0.01)}, 0.02, runs);
   return 0;

@@ -172,6 +172,15 @@ class Scene {
     if (count > 0) check(proxBody_GetContacts(b_, out.data(), count, &count));
     return out;
   }
+  // The contacts and each one's patch (docs/patches.md), from one snapshot.
+  void contacts(std::vector<proxContact>& contacts, std::vector<proxContactPatch>& patches) const {
+    int32_t count = 0;
+    const proxResult r = proxBody_GetContactPatches(b_, nullptr, nullptr, 0, &count);
+    if (r != PROX_ERROR_CAPACITY) check(r);
+    contacts.resize(static_cast<std::size_t>(count));
+    patches.resize(static_cast<std::size_t>(count));
+    if (count > 0) check(proxBody_GetContactPatches(b_, contacts.data(), patches.data(), count, &count));
+  }
   proxWrench wrench() const {
     proxWrench w;
     check(proxBody_GetWrench(b_, &w));

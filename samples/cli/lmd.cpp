@@ -12,6 +12,7 @@ int lmd(Args& args) {
   std::string json_path;
   proxPatchSettings patches{0.0, 0.0, 0.0};
   bool radius_given = false, angle_given = false, spread_given = false;  // else the world's default
+  double leaf_budget = -1.0;                                             // -1: the world's default
   while (!args.empty()) {
     const std::string opt = args.next("option");
     if (opt == "--pose-a")
@@ -33,7 +34,11 @@ int lmd(Args& args) {
     else if (opt == "--patch-spread")
       patches.maxSpreadOverCutoff = parse_number(args.next("--patch-spread value"), "--patch-spread"),
       spread_given = true;
-    else if (opt == "--json")
+    else if (opt == "--leaf-budget") {
+      leaf_budget = parse_number(args.next("--leaf-budget value"), "--leaf-budget");
+      if (leaf_budget < 0 || leaf_budget > 1e15 || leaf_budget != std::floor(leaf_budget))
+        fail("--leaf-budget must be a whole number from 0 (no bound) to 1e15");
+    } else if (opt == "--json")
       json_path = args.next("--json file");
     else
       fail("lmd: unknown option '" + opt + "'");
@@ -51,8 +56,13 @@ int lmd(Args& args) {
   if (angle_given) rule.maxAngleDegrees = patches.maxAngleDegrees;
   if (spread_given) rule.maxSpreadOverCutoff = patches.maxSpreadOverCutoff;
   check(proxWorld_SetPatchSettings(scene.world(), &rule));
+  if (leaf_budget >= 0) check(proxWorld_SetLeafBudget(scene.world(), static_cast<uint64_t>(leaf_budget)));
+  uint64_t budget = 0;
+  check(proxWorld_GetLeafBudget(scene.world(), &budget));
   check(proxWorld_Step(scene.world()));
-  const std::vector<proxContact> contacts = scene.contacts();
+  std::vector<proxContact> contacts;
+  std::vector<proxContactPatch> patch_of;
+  scene.contacts(contacts, patch_of);
   const proxWrench w = scene.wrench();
   proxSearchStats r;
   check(proxWorld_GetSearchStats(scene.world(), &r));
@@ -65,11 +75,17 @@ int lmd(Args& args) {
   std::printf("%s contacts between %s and %s within %g: %zu (patches of %d LMDs, from %llu candidates)\n",
               method_name(method), path_a.c_str(), path_b.c_str(), cutoff, contacts.size(), ps.lmds,
               static_cast<unsigned long long>(r.candidates));
-  for (const proxContact& c : contacts)
-    std::printf("  tri %u - tri %u  d=%.9g  %s-%s  a=(%.6g, %.6g, %.6g) b=(%.6g, %.6g, %.6g)\n",
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const proxContact& c = contacts[i];
+    std::printf("  tri %u - tri %u  d=%.9g  %s-%s  a=(%.6g, %.6g, %.6g) b=(%.6g, %.6g, %.6g)",
                 c.triangleOther, c.triangleTool, c.distance, feature_name(c.featureOther),
                 feature_name(c.featureTool), c.pointOther.x, c.pointOther.y, c.pointOther.z, c.pointTool.x,
                 c.pointTool.y, c.pointTool.z);
+    if (patch_of[i].count > 1)
+      std::printf("  patch of %d (within %.3g, %.3g farther)", patch_of[i].count, patch_of[i].extent,
+                  patch_of[i].spread);
+    std::printf("\n");
+  }
   if (contacts.empty())
     std::printf("  minimum distance: none within the cutoff\n");
   else
@@ -88,6 +104,11 @@ int lmd(Args& args) {
       "%g x the cutoff farther\n",
       ps.lmds, ps.patches, ps.merged, ps.largestPatch, rule.radiusOverCutoff, rule.maxAngleDegrees,
       rule.maxSpreadOverCutoff);
+  if (ps.cutNodePairs > 0)
+    std::printf(
+        "  bounded search: past %llu leaf pairs, %d node pairs of patch size cut to one contact each "
+        "(their LMDs are not counted)\n",
+        static_cast<unsigned long long>(budget), ps.cutNodePairs);
   if (ps.intersectingPairs > 0)
     std::printf("  intersection: the surfaces cross (%llu triangle pairs; not contacts)\n",
                 static_cast<unsigned long long>(ps.intersectingPairs));
@@ -103,7 +124,8 @@ int lmd(Args& args) {
     j.key("method").value(method_name(method));
     j.key("cutoff").value(cutoff);
     j.key("lmds").begin_array();
-    for (const proxContact& c : contacts) {
+    for (std::size_t i = 0; i < contacts.size(); ++i) {
+      const proxContact& c = contacts[i];
       j.begin_object();
       j.key("tri_a").value(static_cast<long long>(c.triangleOther));
       j.key("tri_b").value(static_cast<long long>(c.triangleTool));
@@ -112,6 +134,10 @@ int lmd(Args& args) {
       j.key("distance").value(c.distance);
       j.key("feature_a").value(feature_name(c.featureOther));
       j.key("feature_b").value(feature_name(c.featureTool));
+      j.key("patch_count").value(static_cast<long long>(patch_of[i].count));
+      j.key("patch_extent").value(patch_of[i].extent);
+      j.key("patch_spread").value(patch_of[i].spread);
+      j.key("patch_angle").value(patch_of[i].angle);
       j.end_object();
     }
     j.end_array();
@@ -137,6 +163,8 @@ int lmd(Args& args) {
     j.key("radius_over_cutoff").value(rule.radiusOverCutoff);
     j.key("max_angle_degrees").value(rule.maxAngleDegrees);
     j.key("max_spread_over_cutoff").value(rule.maxSpreadOverCutoff);
+    j.key("leaf_budget").value(static_cast<long long>(budget));
+    j.key("cut_node_pairs").value(static_cast<long long>(ps.cutNodePairs));
     j.end_object();
     j.key("intersection").begin_object();
     j.key("crossing").value(ps.intersectingPairs > 0);

@@ -162,6 +162,45 @@ class CliTest(unittest.TestCase):
         self.assertNotEqual(r.returncode, 0)
         self.assertIn("maxAngleDegrees", r.stderr)
 
+    def test_lmd_leaf_budget_cuts_parallel_sheets(self):
+        # Two 1 cm squares of 10 x 10 cells, the second 1 mm above the
+        # first and facing it; the default cutoff is 5 mm.
+        def sheet(name, z, facing_down):
+            lines = [f"v {i / 1000} {j / 1000} {z}" for j in range(11) for i in range(11)]
+            for j in range(10):
+                for i in range(10):
+                    a = j * 11 + i + 1
+                    b, c, d = a + 1, a + 11, a + 12
+                    lines += [f"f {a} {d} {b}", f"f {a} {c} {d}"] if facing_down else \
+                        [f"f {a} {b} {d}", f"f {a} {d} {c}"]
+            return write(self.dir.name, name, "\n".join(lines) + "\n")
+        floor, tool = sheet("floor.obj", 0, False), sheet("tool.obj", 0.001, True)
+        json_path = os.path.join(self.dir.name, "sheets.json")
+        r = run("lmd", floor, tool, "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertNotIn("bounded search", r.stdout)
+        with open(json_path) as f:
+            whole = json.load(f)
+        self.assertEqual((whole["patches"]["leaf_budget"], whole["patches"]["cut_node_pairs"]), (100000, 0))
+        r = run("lmd", floor, tool, "--leaf-budget", "1", "--json", json_path)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("bounded search: past 1 leaf pairs,", r.stdout)
+        with open(json_path) as f:
+            cut = json.load(f)
+        self.assertEqual(cut["patches"]["leaf_budget"], 1)
+        n = cut["patches"]["cut_node_pairs"]
+        self.assertGreater(n, 0)
+        # At most 8 triangle pairs tried per cut node pair past the budget.
+        self.assertLessEqual(cut["stats"]["leaf_pairs"], 1 + 8 * n)
+        self.assertLess(cut["stats"]["leaf_pairs"], whole["stats"]["leaf_pairs"])
+        self.assertLess(cut["patches"]["lmds"], whole["patches"]["lmds"])
+        self.assertAlmostEqual(cut["min_distance"], 0.001, delta=1e-12)
+        self.assertGreaterEqual(len(cut["lmds"]), 1)
+        for bad in ("-1", "2.5", "x"):
+            r = run("lmd", floor, tool, "--leaf-budget", bad)
+            self.assertNotEqual(r.returncode, 0)
+            self.assertIn("--leaf-budget", r.stderr)
+
     def test_polylines_of_two_crossing_triangles(self):
         # B: a triangle in the plane x = 0.25 crossing A's face along
         # x = 0.25, y in [0, 0.75]: one open polyline of length 0.75.

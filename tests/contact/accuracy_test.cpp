@@ -60,6 +60,7 @@ TEST(Accuracy, PreciseMatchesTheReferenceOnBunnyPairs) {
     EXPECT_NEAR(ref.min_distance, gap, 1e-9 * model->size) << "pose " << i;
     EXPECT_NEAR(fast.min_distance, ref.min_distance, 1e-9 * model->size) << "pose " << i;
     EXPECT_GE(fast.candidates, fast.lmds.size());
+    EXPECT_EQ(fast.global.cut_node_pairs, 0u) << "pose " << i << ": past the default leaf budget";
     precise_error = std::max(precise_error, std::abs(fast.min_distance - ref.min_distance) / model->size);
     if (base.min_distance >= 0.0)
       original_error = std::max(original_error, std::abs(base.min_distance - ref.min_distance) / model->size);
@@ -133,6 +134,8 @@ TEST(Accuracy, PreciseMatchesTheReferenceOnGltfModels) {
       find_lmds(q, Method::Precise, state, fast);
       find_lmds(q, Method::Original, state, base);
       ASSERT_FALSE(ref.lmds.empty()) << pair.name << " pose " << i;
+      EXPECT_EQ(fast.global.cut_node_pairs, 0u)
+          << pair.name << " pose " << i << ": past the default leaf budget";
       error = std::max(error, std::abs(fast.min_distance - ref.min_distance) / size);
       const Match m = match_lmds(ref.lmds, fast.lmds, 1e-9 * size);
       total.reference += m.reference, total.found += m.found;

@@ -138,11 +138,13 @@ void check_flat_field(const char* name, const Model& a, const Model& b, const Po
                       std::uint32_t max_patches) {
   PairQuery q = make_query(a, Pose{}, b, pose_b, cutoff);
   q.patches.radius_over_cutoff = 0.0;
+  q.patches.leaf_budget = 0;  // every LMD, for the comparison
   PairState state;
   ProximityResult r;
   find_lmds(q, Method::Precise, state, r);
   const std::vector<LmdPair> unmerged = r.lmds;
   q.patches = PatchSettings{};
+  q.patches.leaf_budget = 0;
   std::vector<LmdPair> seeds = unmerged;
   PatchStats stats;
   state.patches.merge(q, q.patches, seeds, stats);
@@ -238,6 +240,74 @@ TEST(Patches, SuzanneAgainstItselfMovedOneCentimetre) {
   // terms (the surface's 11 m^2 over pi r^2 / 4 at r = 2 cm) is far above
   // it; what is asserted is what the default rule gives, with margin.
   check_flat_field("Suzanne +1 cm", *m, *m, Pose{glm::dmat3(1.0), Vec3(0.0, 0.0, 0.01)}, 0.02, 9000);
+}
+
+// The bounded search (docs/patches.md): over its leaf budget the search cuts
+// node pairs of patch size to one representative each, so two parallel
+// sheets cost about the same at 4 times the triangles once the triangles are
+// smaller than the patch; the closest contact and the clipped force stay
+// those of the whole set.
+TEST(Patches, TheLeafBudgetBoundsTheSearchWhateverTheTriangles) {
+  const double cutoff = 0.005;
+  const Pose above{glm::dmat3(1.0), Vec3(0.0, 0.0, 0.001)};
+  const std::uint64_t budget = 2000;
+  std::uint64_t cut_fine = 0, leaves_fine = 0;
+  for (const int n : {30, 120, 240}) {
+    const auto a = square_sheet(n, 0.1, false), b = square_sheet(n, 0.1, true);
+    ASSERT_TRUE(a && b);
+    PairQuery q = make_query(*a, Pose{}, *b, above, cutoff);
+    q.patches.leaf_budget = budget;
+    PairState state;
+    ProximityResult r;
+    find_lmds(q, Method::Precise, state, r);
+    std::printf(
+        "[ patches ] sheets of %u triangles, budget %llu: %llu leaf pairs, %llu cut node pairs, "
+        "%u candidates, %u LMDs, %zu contacts, %.1f ms search, %.1f ms reduction\n",
+        a->mesh.triangle_count(), static_cast<unsigned long long>(budget),
+        static_cast<unsigned long long>(r.global.leaf_pairs),
+        static_cast<unsigned long long>(r.global.cut_node_pairs), r.candidates, r.patches.lmds_in,
+        r.lmds.size(), 1e3 * r.global.seconds, 1e3 * (r.reduction[0].seconds + r.reduction[1].seconds));
+    const std::uint64_t cut = r.global.cut_node_pairs;
+    EXPECT_GT(cut, 0u);
+    // At most 8 leaf pairs are tried per cut node pair beyond the budget.
+    EXPECT_LE(r.global.leaf_pairs, budget + 8 * cut);
+    // Seeds a radius apart on the 0.1 m square: at most (s + r)^2 / (pi r^2 / 4).
+    const auto seeds_bound =
+        static_cast<std::size_t>((0.1 + cutoff) * (0.1 + cutoff) / (kPiHere * cutoff * cutoff / 4.0));
+    EXPECT_GE(r.lmds.size(), 100u) << "the whole sheet is covered, not only the budget's part";
+    EXPECT_LE(r.lmds.size(), seeds_bound);
+    // The sheets are flat and parallel: every contact is 1 mm, straight up.
+    for (const LmdPair& p : r.lmds) {
+      EXPECT_NEAR(p.distance, 0.001, 1e-12);
+      EXPECT_NEAR(glm::normalize(p.point_b - p.point_a).z, 1.0, 1e-12);
+    }
+    if (n == 30) {
+      // The whole set, for the force: both sums beyond the clip, straight
+      // up, so the clipped forces agree although the cut set weighs fewer
+      // LMDs.
+      PairQuery all = q;
+      all.patches.leaf_budget = 0;
+      PairState state_all;
+      ProximityResult whole;
+      find_lmds(all, Method::Precise, state_all, whole);
+      EXPECT_EQ(whole.global.cut_node_pairs, 0u);
+      EXPECT_GT(whole.global.leaf_pairs, r.global.leaf_pairs);
+      EXPECT_LT(r.patches.lmds_in, whole.patches.lmds_in) << "the cut LMDs are not counted";
+      EXPECT_NEAR(r.min_distance, whole.min_distance, 1e-12);
+      const ForceSettings f = hard_force_settings();
+      const Wrench cut_force = tool_wrench(f, r.lmds, Vec3(0.05, 0.05, 0.001));
+      const Wrench whole_force = tool_wrench(f, whole.lmds, Vec3(0.05, 0.05, 0.001));
+      EXPECT_TRUE(cut_force.clipped && whole_force.clipped);
+      EXPECT_LE(glm::length(cut_force.force - whole_force.force), 1e-9 * f.max_force);
+    } else if (n == 120) {
+      cut_fine = cut, leaves_fine = r.global.leaf_pairs;
+    } else {
+      // 4 times the triangles: the cut work is about the same (bounded by
+      // the area over the patch radius squared, not by the triangles).
+      EXPECT_LE(cut, cut_fine * 3 / 2);
+      EXPECT_LE(r.global.leaf_pairs, leaves_fine * 3 / 2);
+    }
+  }
 }
 
 }  // namespace

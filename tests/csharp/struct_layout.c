@@ -26,6 +26,7 @@ int main(void) {
   SIZE(proxMeshInfo);
   SIZE(proxBodyDef);
   SIZE(proxContact);
+  SIZE(proxContactPatch);
   SIZE(proxWrench);
   SIZE(proxPolylineInfo);
   SIZE(proxWorldStats);
@@ -61,6 +62,7 @@ int main(void) {
   OFFSET(proxContact, pointTool);
   OFFSET(proxContact, distance);
   OFFSET(proxContact, featureOther);
+  OFFSET(proxContactPatch, extent);
   OFFSET(proxWrench, clipped);
   OFFSET(proxPolylineInfo, closed);
   OFFSET(proxDeviceDef, userData);
@@ -81,5 +83,6 @@ int main(void) {
   OFFSET(proxSearchStats, nodePairs);
   OFFSET(proxTrackStats, distanceEvaluations);
   OFFSET(proxPatchStats, intersectingPairs);
+  OFFSET(proxPatchStats, cutNodePairs);
   return 0;
 }

@@ -139,15 +139,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         break;
       case 9: {
         proxContact contacts[8];
+        proxContactPatch patches[8];
         int32_t count = -1;
         const int32_t capacity = in.u8() % 4 == 0 ? in.i32() : in.u8() % 9;
         const bool fits = capacity >= 0 && capacity <= 8;
-        const proxResult r =
-            proxBody_GetContacts(pick(in, bodies), fits ? contacts : nullptr, capacity, &count);
-        named(r, "proxBody_GetContacts");
+        // The contacts alone, or with their patches (either array may be left out).
+        const std::uint8_t how = in.u8() % 4;
+        proxContact* c = fits && how != 2 ? contacts : nullptr;
+        proxContactPatch* p = fits && how >= 2 ? patches : nullptr;
+        const proxResult r = how == 0 ? proxBody_GetContacts(pick(in, bodies), c, capacity, &count)
+                                      : proxBody_GetContactPatches(pick(in, bodies), c, p, capacity, &count);
+        named(r, how == 0 ? "proxBody_GetContacts" : "proxBody_GetContactPatches");
         if (r == PROX_SUCCESS || r == PROX_ERROR_CAPACITY)
-          for (int32_t i = 0; i < (count < capacity ? count : capacity); ++i)
-            PROX_FUZZ_CHECK(std::isfinite(contacts[i].distance), "contact distance %g", contacts[i].distance);
+          for (int32_t i = 0; i < (count < capacity ? count : capacity); ++i) {
+            if (c) PROX_FUZZ_CHECK(std::isfinite(c[i].distance), "contact distance %g", c[i].distance);
+            if (p)
+              PROX_FUZZ_CHECK(p[i].count >= 1 && std::isfinite(p[i].extent) && std::isfinite(p[i].angle),
+                              "patch of %d, extent %g", p[i].count, p[i].extent);
+          }
         break;
       }
       case 10: {
@@ -236,6 +245,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         proxPatchSettings rule{in.number(), in.number(), in.number()};
         CALL(proxWorld_SetPatchSettings(world, &rule));
         CALL(proxWorld_GetPatchSettings(world, &rule));
+        // Any leaf budget: a small one makes the steps that follow cut.
+        uint64_t budget = in.u8() % 2 ? in.u8() : static_cast<uint64_t>(in.u32()) << 16;
+        CALL(proxWorld_SetLeafBudget(world, budget));
+        CALL(proxWorld_GetLeafBudget(world, &budget));
         break;
       }
       default: {

@@ -33,8 +33,9 @@ ScriptedDeviceRecord = make_dataclass("proxScriptedDeviceRecord", "ScriptedDevic
 
 
 def _public_contact_dtype():
-    """proxContact in snake_case: vectors as (3,) float64, the other body as an
-    object (a Body), last."""
+    """proxContact in snake_case: vectors as (3,) float64; then its patch's
+    fields as patch_count, patch_extent, patch_spread, patch_angle; the other
+    body as an object (a Body), last."""
     raw = c_dtype("proxContact")
     fields, objects = [], []
     for name, field in ffi.typeof("proxContact").fields:
@@ -44,6 +45,9 @@ def _public_contact_dtype():
             objects.append((snake(name), object))
         else:
             fields.append((snake(name), raw.fields[name][0]))
+    # The contact's patch (proxContactPatch, docs/patches.md) beside it.
+    patch = c_dtype("proxContactPatch")
+    fields += [("patch_" + snake(n), patch.fields[n][0]) for n in patch.names if n != "reserved"]
     return np.dtype(fields + objects)
 
 

@@ -262,6 +262,23 @@ class World:
         check(lib.proxWorld_SetPatchSettings(self._idp[0], out))
 
     @property
+    def leaf_budget(self):
+        """The bounded search's budget (docs/patches.md): after this many
+        triangle pairs one pair's search gives one representative per
+        patch-sized node pair; 0: no bound. Assign an int >= 0 to change it
+        from the next step on."""
+        out = ffi.new("uint64_t*")
+        check(lib.proxWorld_GetLeafBudget(self._idp[0], out))
+        return int(out[0])
+
+    @leaf_budget.setter
+    def leaf_budget(self, value):
+        value = integer(value, "leaf_budget")
+        if not 0 <= value < 2 ** 64:
+            raise invalid(f"leaf_budget must be in [0, 2**64), not {value}")
+        check(lib.proxWorld_SetLeafBudget(self._idp[0], value))
+
+    @property
     def safety_stats(self):
         return self._stats(SafetyStats, lib.proxWorld_GetSafetyStats, "proxSafetyStats")
 
@@ -449,6 +466,8 @@ def _flat_dtype(name):
 
 _CONTACT_FLAT = _flat_dtype("proxContact")
 _CONTACT_FIELDS = [(snake(n), n) for n in _CONTACT_FLAT.names if n != "other"]
+_PATCH_DTYPE = c_dtype("proxContactPatch")
+_PATCH_FIELDS = [("patch_" + snake(n), n) for n in _PATCH_DTYPE.names if n != "reserved"]
 _LINE_DTYPE = c_dtype("proxPolylineInfo")
 
 
@@ -461,6 +480,7 @@ class Body:
         self.type = type
         self.mesh = mesh
         self._contacts = None
+        self._patches = None
         self._count = ffi.new("int32_t*")
         # The bodies its contacts named (they keep their world alive, not this body).
         self._others = {}
@@ -492,12 +512,16 @@ class Body:
         local tracking's latest): a structured array of contact_dtype."""
         if self._contacts is None:
             self._contacts = ffi.new("proxContact[]", 64)
+            self._patches = ffi.new("proxContactPatch[]", 64)
         while True:
-            result = lib.proxBody_GetContacts(self._idp[0], self._contacts, len(self._contacts), self._count)
+            # The contacts and their patches from one snapshot.
+            result = lib.proxBody_GetContactPatches(self._idp[0], self._contacts, self._patches,
+                                                    len(self._contacts), self._count)
             if result != CAPACITY:
                 check(result)
                 break
             self._contacts = ffi.new("proxContact[]", self._count[0])
+            self._patches = ffi.new("proxContactPatch[]", self._count[0])
         n = self._count[0]
         out = np.empty(n, dtype=contact_dtype)
         if n == 0:
@@ -505,6 +529,9 @@ class Body:
         flat = np.frombuffer(ffi.buffer(self._contacts, n * _CONTACT_FLAT.itemsize), dtype=_CONTACT_FLAT)
         for public, c in _CONTACT_FIELDS:
             out[public] = flat[c]
+        patches = np.frombuffer(ffi.buffer(self._patches, n * _PATCH_DTYPE.itemsize), dtype=_PATCH_DTYPE)
+        for public, c in _PATCH_FIELDS:
+            out[public] = patches[c]
         keys = flat["other"]
         if (keys == keys[0]).all():
             out["other"] = self._other(int(keys[0]), 0)

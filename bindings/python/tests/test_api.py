@@ -165,13 +165,17 @@ def test_step_contacts_wrench_and_stats(world, bunny):
     world.step()
     c = tool.contacts()
     assert c.dtype == proxima.contact_dtype
-    # Six LMDs; three of them (3.302 to 3.311 mm, a few mm apart, one
-    # direction) lie on a flat stretch of the distance field and are one
-    # patch (docs/patches.md).
+    # Six LMDs; two pairs of them (3.310 and 3.311 mm, 3.732 and 3.741 mm, a
+    # few mm apart, one direction each) lie on flat stretches of the distance
+    # field and are one patch each (docs/patches.md).
     assert world.patch_stats.lmds == 6 and world.patch_stats.merged == 2
     assert len(c) == 4
     assert set(c.dtype.names) == {"point_tool", "point_other", "normal", "distance", "triangle_tool",
-                                  "triangle_other", "feature_tool", "feature_other", "other"}
+                                  "triangle_other", "feature_tool", "feature_other", "patch_count",
+                                  "patch_extent", "patch_spread", "patch_angle", "other"}
+    # Each of those two contacts stands for its pair; the other two alone.
+    assert sorted(c["patch_count"].tolist()) == [1, 1, 2, 2]
+    assert c["patch_extent"][c["patch_count"] == 1].tolist() == [0.0, 0.0]
     assert all(o is rock for o in c["other"])
     # Each contact: the distance is the gap between its points, along the unit normal (other -> tool).
     gap = c["point_tool"] - c["point_other"]
@@ -323,8 +327,9 @@ def test_every_c_function_is_bound():
                      if p.name not in ("_ffi.py", "_header.py"))
     functions = [name for name in dir(lib) if name.startswith("prox") and callable(getattr(lib, name))]
     assert len(functions) > 40
-    # Python device callbacks are refused (docs/python.md), so their def is not needed.
-    unbound = {"proxDefaultDeviceDef"}
+    # Python device callbacks are refused (docs/python.md), so their def is not needed;
+    # Body.contacts() takes the contacts with their patches (proxBody_GetContactPatches).
+    unbound = {"proxDefaultDeviceDef", "proxBody_GetContacts"}
     missing = [f for f in functions if f not in unbound and not re.search(rf"\blib\.{f}\b", source)]
     assert missing == []
 

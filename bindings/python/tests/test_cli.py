@@ -68,6 +68,8 @@ def test_contacts_equal_the_cli(cli, tmp_path, method, force, cutoff, pose):
             assert row["distance"] == lmd["distance"]
             assert row["feature_other"] == FEATURES[lmd["feature_a"]]
             assert row["feature_tool"] == FEATURES[lmd["feature_b"]]
+            assert row["patch_count"] == lmd["patch_count"] and row["patch_extent"] == lmd["patch_extent"]
+            assert row["patch_spread"] == lmd["patch_spread"] and row["patch_angle"] == lmd["patch_angle"]
         assert c["distance"].min() == expected["min_distance"]
         force_, torque, _ = tool.wrench()
         assert force_.tolist() == expected["force"] and torque.tolist() == expected["torque"]

@@ -54,13 +54,22 @@ def test_parallel_sheets_merge_and_can_be_left_unmerged(world, sheets):
     merged = world.patch_stats
     assert merged.lmds > 800 and 1 <= merged.patches <= 31
     assert merged.merged == merged.lmds - merged.patches and merged.largest_patch > 1
-    assert len(tool.contacts()) == merged.patches
+    c = tool.contacts()
+    assert len(c) == merged.patches
     assert merged.intersecting_pairs == 0
+    # Each contact's patch: the counts add up to the LMDs before merging, and
+    # every patch keeps the rule (radius = the 5 mm cutoff, 0.2% of it, 5 deg).
+    assert c["patch_count"].sum() == merged.lmds and c["patch_count"].max() == merged.largest_patch
+    assert (c["patch_count"] >= 1).all()
+    assert (c["patch_extent"] <= 0.005 + 1e-12).all() and (c["patch_spread"] <= 1e-5 + 1e-12).all()
+    assert (c["patch_angle"] <= math.radians(5.0) + 1e-9).all()
     world.patch_settings = (0.0, 5.0, 0.002)
     world.step()
     unmerged = world.patch_stats
     assert unmerged.lmds == merged.lmds == unmerged.patches and unmerged.merged == 0
-    assert len(tool.contacts()) == unmerged.lmds
+    c = tool.contacts()
+    assert len(c) == unmerged.lmds
+    assert (c["patch_count"] == 1).all() and (c["patch_extent"] == 0).all() and (c["patch_angle"] == 0).all()
 
 
 def test_crossing_sheets_are_an_intersection(world, sheets):
@@ -71,3 +80,28 @@ def test_crossing_sheets_are_an_intersection(world, sheets):
     s = world.patch_stats
     assert s.intersecting_pairs >= 1 and s.intersecting_bodies == 1
     assert (tool.contacts()["distance"] > 0).all()
+
+
+def test_leaf_budget_bounds_the_search_of_parallel_sheets(world, sheets):
+    _, tool = sheets
+    assert world.leaf_budget == 100000
+    with pytest.raises(proxima.InvalidArgument, match="leaf_budget"):
+        world.leaf_budget = -1
+    with pytest.raises(proxima.InvalidArgument, match="leaf_budget"):
+        world.leaf_budget = 1.5
+    world.step()
+    exact = world.patch_stats, world.search_stats, tool.contacts()
+    assert exact[0].cut_node_pairs == 0
+    world.leaf_budget = 100
+    assert world.leaf_budget == 100
+    world.step()  # the setting alone makes it search again
+    cut = world.patch_stats, world.search_stats, tool.contacts()
+    assert cut[0].cut_node_pairs > 0
+    # At most 8 triangle pairs tried per cut node pair beyond the budget.
+    assert cut[1].leaf_pairs <= 100 + 8 * cut[0].cut_node_pairs < exact[1].leaf_pairs
+    assert 1 <= len(cut[2]) and cut[0].lmds < exact[0].lmds
+    # The sheets are flat: the closest contact is as close as ever.
+    assert cut[2]["distance"].min() == pytest.approx(exact[2]["distance"].min(), abs=1e-12)
+    world.leaf_budget = 0  # no bound
+    world.step()
+    assert world.patch_stats.cut_node_pairs == 0 and world.patch_stats.lmds == exact[0].lmds

@@ -309,6 +309,24 @@ typedef struct proxContact {
 PROX_API proxResult proxBody_GetContacts(proxBodyId tool, proxContact* contacts, int32_t capacity,
                                          int32_t* count);
 
+/* The patch a contact stands for (docs/patches.md): where the distance
+ * field is flat, LMDs merge into the closest of them, which weighs their
+ * count in the force. */
+typedef struct proxContactPatch {
+  int32_t count; /* LMDs the contact stands for, itself included: 1 when nothing merged into it */
+  int32_t reserved;
+  double extent; /* m: how far the farthest member's point on the tool is from the contact's */
+  double spread; /* m: how much farther from the other body the farthest member is */
+  double angle;  /* radians: the largest angle between a member's direction and the contact's */
+} proxContactPatch;
+
+/* proxBody_GetContacts with each contact's patch beside it, both from one
+ * snapshot (so they agree while the threads run): patches[i] is the patch
+ * of contacts[i]. Either array may be NULL when not wanted; capacity and
+ * *count as in proxBody_GetContacts. Game thread. */
+PROX_API proxResult proxBody_GetContactPatches(proxBodyId tool, proxContact* contacts,
+                                               proxContactPatch* patches, int32_t capacity, int32_t* count);
+
 typedef struct proxWrench {
   proxVec3 force;  /* N, on the tool, world frame */
   proxVec3 torque; /* N m, on the tool about its reference point, world frame */
@@ -381,11 +399,28 @@ typedef struct proxPatchStats {
    * (proxBody_GetIntersections traces it). */
   uint64_t intersectingPairs;
   int32_t intersectingBodies; /* pairs searched with any */
-  int32_t reserved;
+  /* Node pairs the bounded search cut (proxWorld_SetLeafBudget): each gave
+   * one representative instead of all its LMDs, which are then not counted
+   * in lmds (the force errs low there). 0 when every search stayed within
+   * its budget. */
+  int32_t cutNodePairs;
 } proxPatchStats;
 
 /* Game thread. */
 PROX_API proxResult proxWorld_GetPatchStats(proxWorldId world, proxPatchStats* stats);
+
+/* The bounded search (docs/patches.md): once one pair's precise global
+ * search has tested this many triangle pairs, each node pair it meets whose
+ * two bounding spheres are within half the patch radius (half the cutoff
+ * with merging off) gives one representative, the first candidate of at
+ * most 8 of its triangle pairs tried closest first, instead of every
+ * triangle pair below it. Where surfaces run parallel or cross over a large
+ * area, the work is then bounded by that area over the patch radius
+ * squared, not by the triangle count. 0: no bound; the default is 100000.
+ * Changes it from the next proxWorld_Step on (the pairs' cached results are
+ * dropped); PROX_ERROR_BUSY while the threads run. Game thread. */
+PROX_API proxResult proxWorld_SetLeafBudget(proxWorldId world, uint64_t leafPairs);
+PROX_API proxResult proxWorld_GetLeafBudget(proxWorldId world, uint64_t* leafPairs);
 
 /* ---- devices ---------------------------------------------------------------- */
 

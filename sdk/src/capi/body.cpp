@@ -4,9 +4,65 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <climits>
+#include <cstdint>
+#include <string>
 
 using namespace prox;
 using namespace prox::capi;
+
+namespace {
+
+// proxBody_GetContacts and proxBody_GetContactPatches: one snapshot of the
+// tool's contacts into either or both arrays. `need_contacts`: the contacts
+// array is the one output (GetContacts), so a capacity needs it.
+void copy_contacts(proxBodyId tool, proxContact* contacts, proxContactPatch* patches, int32_t capacity,
+                   int32_t* count, bool need_contacts) {
+  need(count, "count");
+  *count = 0;
+  if (capacity < 0) fail(PROX_ERROR_INVALID_ARGUMENT, "capacity is negative");
+  if (capacity > 0 && need_contacts) need(contacts, "contacts");
+  if (capacity > 0 && !contacts && !patches)
+    fail(PROX_ERROR_INVALID_ARGUMENT, "contacts and patches are both NULL with a capacity of " +
+                                          std::to_string(capacity) + " (pass 0 to ask the count)");
+  runtime::World* w = nullptr;
+  const runtime::Handle h = tool_of(tool, w);
+  std::vector<runtime::Contact> list;
+  w->contacts(h, list);
+  *count = static_cast<int32_t>(list.size());
+  const std::size_t n = std::min<std::size_t>(list.size(), static_cast<std::size_t>(capacity));
+  for (std::size_t i = 0; i < n; ++i) {
+    const runtime::Contact& c = list[i];
+    const LmdPair& p = c.lmd;
+    if (contacts) {
+      proxContact& out = contacts[i];
+      out.other = {c.other + 1, w->body_generation(c.other), tool.world};
+      out.pointTool = to_c(p.point_b);
+      out.pointOther = to_c(p.point_a);
+      const Vec3 d = p.point_b - p.point_a;
+      const double len = glm::length(d);
+      out.normal = to_c(len > 0.0 ? d / len : Vec3(0.0));
+      out.distance = p.distance;
+      out.triangleTool = p.tri_b;
+      out.triangleOther = p.tri_a;
+      out.featureTool = static_cast<int32_t>(p.feature_b.kind);
+      out.featureOther = static_cast<int32_t>(p.feature_a.kind);
+    }
+    if (patches) {
+      proxContactPatch& out = patches[i];
+      out = proxContactPatch{};
+      out.count = static_cast<int32_t>(std::min<std::uint32_t>(p.patch_count, INT32_MAX));
+      out.extent = p.patch_extent;
+      out.spread = p.patch_spread;
+      out.angle = p.patch_angle;
+    }
+  }
+  if (n < list.size())
+    fail(PROX_ERROR_CAPACITY, "capacity " + std::to_string(capacity) + " is less than the " +
+                                  std::to_string(list.size()) + " contacts (*count says how many)");
+}
+
+}  // namespace
 
 extern "C" {
 
@@ -117,37 +173,14 @@ proxResult proxBody_GetProxyPose(proxBodyId tool, proxPose* pose) {
 }
 
 proxResult proxBody_GetContacts(proxBodyId tool, proxContact* contacts, int32_t capacity, int32_t* count) {
-  return guard("proxBody_GetContacts", [&] {
-    need(count, "count");
-    *count = 0;
-    if (capacity < 0) fail(PROX_ERROR_INVALID_ARGUMENT, "capacity is negative");
-    if (capacity > 0) need(contacts, "contacts");
-    runtime::World* w = nullptr;
-    const runtime::Handle h = tool_of(tool, w);
-    std::vector<runtime::Contact> list;
-    w->contacts(h, list);
-    *count = static_cast<int32_t>(list.size());
-    const std::size_t n = std::min<std::size_t>(list.size(), static_cast<std::size_t>(capacity));
-    for (std::size_t i = 0; i < n; ++i) {
-      const runtime::Contact& c = list[i];
-      const LmdPair& p = c.lmd;
-      proxContact& out = contacts[i];
-      out.other = {c.other + 1, w->body_generation(c.other), tool.world};
-      out.pointTool = to_c(p.point_b);
-      out.pointOther = to_c(p.point_a);
-      const Vec3 d = p.point_b - p.point_a;
-      const double len = glm::length(d);
-      out.normal = to_c(len > 0.0 ? d / len : Vec3(0.0));
-      out.distance = p.distance;
-      out.triangleTool = p.tri_b;
-      out.triangleOther = p.tri_a;
-      out.featureTool = static_cast<int32_t>(p.feature_b.kind);
-      out.featureOther = static_cast<int32_t>(p.feature_a.kind);
-    }
-    if (n < list.size())
-      fail(PROX_ERROR_CAPACITY, "capacity " + std::to_string(capacity) + " is less than the " +
-                                    std::to_string(list.size()) + " contacts (*count says how many)");
-  });
+  return guard("proxBody_GetContacts",
+               [&] { copy_contacts(tool, contacts, nullptr, capacity, count, true); });
+}
+
+proxResult proxBody_GetContactPatches(proxBodyId tool, proxContact* contacts, proxContactPatch* patches,
+                                      int32_t capacity, int32_t* count) {
+  return guard("proxBody_GetContactPatches",
+               [&] { copy_contacts(tool, contacts, patches, capacity, count, false); });
 }
 
 proxResult proxBody_GetWrench(proxBodyId tool, proxWrench* wrench) {

@@ -1,7 +1,11 @@
-// Patches and intersections: the patch rule and what the last step merged
-// and found crossing (docs/patches.md).
+// Patches and intersections: the patch rule, the bounded search's leaf
+// budget, and what the last step merged, cut and found crossing
+// (docs/patches.md).
 #include "capi/common.h"
 
+#include <algorithm>
+#include <climits>
+#include <cstdint>
 #include <string>
 
 using namespace prox;
@@ -34,7 +38,28 @@ proxResult proxWorld_SetPatchSettings(proxWorldId world, const proxPatchSettings
       fail(PROX_ERROR_INVALID_ARGUMENT, "settings->maxSpreadOverCutoff must be >= 0 (it is " +
                                             std::to_string(settings->maxSpreadOverCutoff) + ")");
     need_stopped(w);
-    w.set_patches({settings->radiusOverCutoff, settings->maxAngleDegrees, settings->maxSpreadOverCutoff});
+    PatchSettings p = w.settings().patches;  // keeps the leaf budget
+    p.radius_over_cutoff = settings->radiusOverCutoff;
+    p.max_angle_degrees = settings->maxAngleDegrees;
+    p.max_spread_over_cutoff = settings->maxSpreadOverCutoff;
+    w.set_patches(p);
+  });
+}
+
+proxResult proxWorld_SetLeafBudget(proxWorldId world, uint64_t leafPairs) {
+  return guard("proxWorld_SetLeafBudget", [&] {
+    runtime::World& w = world_of(world);
+    need_stopped(w);
+    PatchSettings p = w.settings().patches;
+    p.leaf_budget = leafPairs;
+    w.set_patches(p);
+  });
+}
+
+proxResult proxWorld_GetLeafBudget(proxWorldId world, uint64_t* leafPairs) {
+  return guard("proxWorld_GetLeafBudget", [&] {
+    need(leafPairs, "leafPairs");
+    *leafPairs = world_of(world).settings().patches.leaf_budget;
   });
 }
 
@@ -49,6 +74,7 @@ proxResult proxWorld_GetPatchStats(proxWorldId world, proxPatchStats* stats) {
     stats->largestPatch = static_cast<int32_t>(s.patches.largest);
     stats->intersectingPairs = s.search.intersecting_pairs;
     stats->intersectingBodies = s.intersecting_bodies;
+    stats->cutNodePairs = static_cast<int32_t>(std::min<std::uint64_t>(s.search.cut_node_pairs, INT32_MAX));
   });
 }
 

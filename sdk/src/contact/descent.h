@@ -6,7 +6,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace prox::detail {
@@ -153,10 +155,12 @@ inline bool g3_rejects(const NodePair& p) {
 // Simultaneous descent of both trees; `use_cones` switches G2/G3 on;
 // `use_boxes` adds the box test to G1's sphere test (the same pairs within the
 // cutoff reach the leaves, far fewer beyond it); `leaf` is called for every
-// leaf pair that passes.
-template <typename Leaf>
+// leaf pair that passes. `cut(ia, ib)` is asked about every inner node pair
+// that passes: when it returns true, the pair is taken as handled and not
+// descended.
+template <typename Leaf, typename Cut>
 void descend(const PairQuery& q, const Frames& frames, bool use_cones, bool use_boxes,
-             GlobalSearchStats& stats, Leaf leaf) {
+             GlobalSearchStats& stats, Leaf leaf, Cut cut) {
   const Snch& ta = *q.snch_a;
   const Snch& tb = *q.snch_b;
   if (ta.nodes().empty() || tb.nodes().empty()) return;
@@ -193,6 +197,8 @@ void descend(const PairQuery& q, const Frames& frames, bool use_cones, bool use_
     if (na.is_leaf() && nb.is_leaf()) {
       ++stats.leaf_pairs;
       leaf(na.first, nb.first);
+    } else if (cut(ia, ib)) {
+      continue;
     } else if (nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius)) {
       stack.emplace_back(na.second, ib);
       stack.emplace_back(na.first, ib);
@@ -203,10 +209,71 @@ void descend(const PairQuery& q, const Frames& frames, bool use_cones, bool use_
   }
 }
 
+// Every node pair that passes is descended.
+template <typename Leaf>
+void descend(const PairQuery& q, const Frames& frames, bool use_cones, bool use_boxes,
+             GlobalSearchStats& stats, Leaf leaf) {
+  descend(q, frames, use_cones, use_boxes, stats, leaf, [](std::uint32_t, std::uint32_t) { return false; });
+}
+
 // Spheres only (the baseline, the reference and the polylines).
 template <typename Leaf>
 void descend(const PairQuery& q, const Frames& frames, bool use_cones, GlobalSearchStats& stats, Leaf leaf) {
   descend(q, frames, use_cones, false, stats, leaf);
+}
+
+// A lower bound on the distance between the triangles below node `ia` of A
+// and node `ib` of B: the better of the spheres' and the boxes' bounds.
+inline double node_pair_lower_bound(const PairQuery& q, const Frames& frames, std::uint32_t ia,
+                                    std::uint32_t ib) {
+  const SnchNode &na = q.snch_a->node(ia), &nb = q.snch_b->node(ib);
+  const double spheres = glm::length(frames.b_to_a.apply(nb.center) - na.center) - na.radius - nb.radius;
+  const SnchBox &ba = q.snch_a->box(ia), &bb = q.snch_b->box(ib);
+  return std::max(spheres, box_lower_bound(frames.axes, ba, bb, frames.b_to_a.apply(bb.center) - ba.center));
+}
+
+// The leaf pairs below node pair (ia, ib) best first, until `leaf(ta, tb)`
+// returns true or `max_leaves` leaf pairs were tried: the representative of
+// a cut node pair. Best is the smaller lower bound; where lower bounds tie
+// (flat, parallel boxes all bound at the gap) the pair whose spheres' centres
+// are closer, by adding a thousandth of that distance. `heap` is scratch.
+struct RankedNodePair {
+  double key;
+  std::uint32_t a, b;
+  bool operator<(const RankedNodePair& o) const { return key > o.key; }  // min-heap
+};
+
+template <typename Leaf>
+bool first_leaf_pair(const PairQuery& q, const Frames& frames, std::uint32_t ia, std::uint32_t ib,
+                     int max_leaves, std::vector<RankedNodePair>& heap, Leaf leaf) {
+  const Snch& ta = *q.snch_a;
+  const Snch& tb = *q.snch_b;
+  auto rank = [&](std::uint32_t a, std::uint32_t b) {
+    const double centres = glm::length(frames.b_to_a.apply(tb.node(b).center) - ta.node(a).center);
+    heap.push_back({node_pair_lower_bound(q, frames, a, b) + 1e-3 * centres, a, b});
+    std::push_heap(heap.begin(), heap.end());
+  };
+  heap.clear();
+  rank(ia, ib);
+  int tried = 0;
+  while (!heap.empty() && tried < max_leaves) {
+    std::pop_heap(heap.begin(), heap.end());
+    const RankedNodePair p = heap.back();
+    heap.pop_back();
+    const SnchNode& na = ta.node(p.a);
+    const SnchNode& nb = tb.node(p.b);
+    if (na.is_leaf() && nb.is_leaf()) {
+      ++tried;
+      if (leaf(na.first, nb.first)) return true;
+    } else if (nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius)) {
+      rank(na.first, p.b);
+      rank(na.second, p.b);
+    } else {
+      rank(p.a, nb.first);
+      rank(p.a, nb.second);
+    }
+  }
+  return false;
 }
 
 }  // namespace prox::detail

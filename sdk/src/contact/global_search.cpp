@@ -31,7 +31,6 @@ MeshFeature mesh_feature(const Mesh& mesh, std::uint32_t triangle, Feature f) {
 
 namespace {
 
-using detail::box_lower_bound;
 using detail::descend;
 using detail::Frames;
 using detail::moved;
@@ -70,7 +69,8 @@ void global_search_precise(const PairQuery& q, std::vector<LmdPair>& out, Global
   const Frames frames(q);
   const Mesh& ma = *q.mesh_a;
   const Mesh& mb = *q.mesh_b;
-  descend(q, frames, q.use_cones, true, stats, [&](std::uint32_t ta, std::uint32_t tb) {
+  // Whether the pair is a candidate (and appended).
+  auto leaf = [&](std::uint32_t ta, std::uint32_t tb) -> bool {
     const Triangle a = ma.triangle(ta);
     const Triangle b = moved(mb.triangle(tb), frames.b_to_a);
     // A cheap lower bound first (about 10 ns, the visibility test 140): when
@@ -79,7 +79,7 @@ void global_search_precise(const PairQuery& q, std::vector<LmdPair>& out, Global
     if (beyond_plane(a, ma.face_normal(ta), b, q.cutoff) ||
         beyond_plane(b, frames.b_to_a.rotate(mb.face_normal(tb)), a, q.cutoff)) {
       ++stats.plane_rejections;
-      return;
+      return false;
     }
     Vec3 na[3], nb[3];
     double sa[3], sb[3];
@@ -96,18 +96,41 @@ void global_search_precise(const PairQuery& q, std::vector<LmdPair>& out, Global
                              : geometry::visibility_pretest(a, na, sa, b, nb, sb);
     if (!visible) {
       ++stats.visibility_rejections;
-      return;
+      return false;
     }
     ++stats.distance_evaluations;
     const geometry::TriangleDistance d = geometry::triangle_distance(a, b);
     if (d.intersects) {
       ++stats.intersecting_pairs;
-      return;
+      return false;
     }
-    if (d.distance > q.cutoff) return;
+    if (d.distance > q.cutoff) return false;
     ++stats.candidates;
     out.push_back(make_pair(q, ta, tb, d.point_a, d.point_b, d.distance, d.feature_a, d.feature_b));
-  });
+    return true;
+  };
+  // Over the leaf budget, a node pair of patch size (both spheres within the
+  // cut radius) gives one candidate, the first of its leaf pairs best first
+  // (at most kCutLeaves tried), instead of all of them: the reduction then
+  // walks it to a local minimum and the patches merge it. Bigger node pairs
+  // are descended as before, so what is cut is bounded by the area within
+  // the cutoff over the cut radius squared, whatever the triangles' size.
+  constexpr int kCutLeaves = 8;
+  const std::uint64_t budget = q.patches.leaf_budget;
+  const std::uint64_t leaves_before = stats.leaf_pairs;
+  const double cut_radius = q.patches.cut_radius(q.cutoff);
+  std::vector<detail::RankedNodePair> heap;
+  auto cut = [&](std::uint32_t ia, std::uint32_t ib) {
+    if (budget == 0 || stats.leaf_pairs - leaves_before < budget) return false;
+    if (q.snch_a->node(ia).radius > cut_radius || q.snch_b->node(ib).radius > cut_radius) return false;
+    ++stats.cut_node_pairs;
+    detail::first_leaf_pair(q, frames, ia, ib, kCutLeaves, heap, [&](std::uint32_t ta, std::uint32_t tb) {
+      ++stats.leaf_pairs;
+      return leaf(ta, tb);
+    });
+    return true;
+  };
+  descend(q, frames, q.use_cones, true, stats, leaf, cut);
   stats.seconds += seconds_since(start);
 }
 
@@ -174,13 +197,8 @@ double closest_pair(const PairQuery& q, double bound, bool first_below, std::uin
     std::uint32_t a, b;
     bool operator<(const Item& o) const { return lower > o.lower; }  // min-heap
   };
-  // The better of the spheres' and the boxes' bounds.
   auto lower_bound = [&](std::uint32_t ia, std::uint32_t ib) {
-    const SnchNode &na = ta.node(ia), &nb = tb.node(ib);
-    const double spheres = glm::length(frames.b_to_a.apply(nb.center) - na.center) - na.radius - nb.radius;
-    const SnchBox &ba = ta.box(ia), &bb = tb.box(ib);
-    return std::max(spheres,
-                    box_lower_bound(frames.axes, ba, bb, frames.b_to_a.apply(bb.center) - ba.center));
+    return detail::node_pair_lower_bound(q, frames, ia, ib);
   };
   std::vector<Item> heap;
   heap.reserve(1024);

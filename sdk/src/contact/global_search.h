@@ -24,6 +24,10 @@ struct GlobalSearchStats {
   // precise: pairs whose exact distance found them crossing; they are an
   // intersection of the two bodies, not contacts, and are not output
   std::uint64_t intersecting_pairs = 0;
+  // precise, over its leaf budget (PatchSettings::leaf_budget): node pairs
+  // of patch size searched for one representative leaf pair each instead of
+  // every leaf pair below them
+  std::uint64_t cut_node_pairs = 0;
   double seconds = 0.0;
 
   GlobalSearchStats& operator+=(const GlobalSearchStats& s) {
@@ -32,7 +36,7 @@ struct GlobalSearchStats {
         visibility_rejections += s.visibility_rejections;
     plane_rejections += s.plane_rejections, normal_rejections += s.normal_rejections;
     distance_evaluations += s.distance_evaluations, candidates += s.candidates, seconds += s.seconds;
-    intersecting_pairs += s.intersecting_pairs;
+    intersecting_pairs += s.intersecting_pairs, cut_node_pairs += s.cut_node_pairs;
     return *this;
   }
 };
@@ -40,6 +44,11 @@ struct GlobalSearchStats {
 // The improved method: G1, G2, G3.a/b on node pairs; at leaves the visibility
 // pre-test and the exact triangle distance. Appends every non-intersecting
 // pair within the cutoff that passes (the candidates, before reduction).
+// Once query.patches.leaf_budget leaf pairs have been tested, each node pair
+// that passes and whose two bounding spheres are both within half the patch
+// radius (half the cutoff with patches off) is cut: one leaf pair below it,
+// reached by always taking the closer child pair, stands for it
+// (docs/patches.md, "The bounded search").
 void global_search_precise(const PairQuery& query, std::vector<LmdPair>& out, GlobalSearchStats& stats);
 
 // The Johnson-Cohen baseline: G1, G2 and the original G3 on node pairs; at

@@ -53,7 +53,17 @@ struct PatchSettings {
   // Members are at most this share of the cutoff farther than the seed: a
   // flat field, not a second feature nearby.
   double max_spread_over_cutoff = 0.002;
+  // The precise search's work bound on flat fields and crossings: after this
+  // many leaf pairs, one representative per patch-sized node pair
+  // (global_search_precise); 0: no bound.
+  std::uint64_t leaf_budget = kDefaultLeafBudget;
+  static constexpr std::uint64_t kDefaultLeafBudget = 100000;
   bool enabled() const { return radius_over_cutoff > 0.0; }
+  // The node pairs the bounded search cuts have both bounding spheres within
+  // this radius: half the patch radius, so that all the points on the tool
+  // below one are within a patch radius of each other (half the cutoff with
+  // merging off).
+  double cut_radius(double cutoff) const { return 0.5 * (enabled() ? radius_over_cutoff : 1.0) * cutoff; }
 };
 
 // Two meshes, each with its hierarchy and world pose, and the cutoff beyond

@@ -66,6 +66,39 @@ namespace Proxima
             return count;
         }
 
+        /// <summary>The tool's contacts with each one's patch beside it (patches[i] is
+        /// contacts[i]'s), from one snapshot, in new arrays.</summary>
+        public Contact[] GetContacts(out ContactPatch[] patches)
+        {
+            for (;;)
+            {
+                Result r = Native.GetContactPatches(id, null, null, out int count);
+                if (r != Result.Success && r != Result.Capacity) throw ProximaException.FromLastError(r);
+                var contacts = new Contact[count];
+                patches = new ContactPatch[count];
+                if (count == 0) return contacts;
+                r = Native.GetContactPatches(id, contacts, patches, out int filled);
+                // Only the threads can change the count between the two calls.
+                if (r == Result.Capacity) continue;
+                Native.Check(r);
+                if (filled == count) return contacts;
+                Array.Resize(ref contacts, filled);
+                Array.Resize(ref patches, filled);
+                return contacts;
+            }
+        }
+
+        /// <summary>Fills the caller's arrays (either may be null) without allocating and
+        /// returns how many contacts there are; as GetContacts(buffer), up to the shorter
+        /// array's length.</summary>
+        public int GetContacts(Contact[] buffer, ContactPatch[] patches)
+        {
+            if (buffer == null && patches == null) throw new ArgumentNullException(nameof(patches));
+            Result r = Native.GetContactPatches(id, buffer, patches, out int count);
+            if (r != Result.Success && r != Result.Capacity) throw ProximaException.FromLastError(r);
+            return count;
+        }
+
         /// <summary>Force and torque on the tool after the last step (while the threads
         /// run: what the haptic loop last handed the device).</summary>
         public Wrench GetWrench()

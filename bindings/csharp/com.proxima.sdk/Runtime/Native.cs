@@ -182,6 +182,9 @@ namespace Proxima
         // for 64 contacts), where pinning costs a GCHandle.
         internal static extern Result proxBody_GetContacts(BodyId tool, IntPtr contacts, int capacity, out int count);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxBody_GetContactPatches(BodyId tool, IntPtr contacts, IntPtr patches, int capacity,
+                                                                 out int count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxBody_GetWrench(BodyId tool, out Wrench wrench);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxBody_GetIntersections(BodyId tool, IntPtr points, int pointCapacity,
@@ -255,7 +258,33 @@ namespace Proxima
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxWorld_GetPatchStats(WorldId world, out PatchStats stats);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxWorld_SetLeafBudget(WorldId world, ulong leafPairs);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxWorld_GetLeafBudget(WorldId world, out ulong leafPairs);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxBody_GetDistance(BodyId a, BodyId b, double maxDistance, out double distance);
+
+        /// <summary>proxBody_GetContactPatches into managed arrays (either may be null), pinned
+        /// for the call; the capacity is the shorter one's length.</summary>
+        internal static Result GetContactPatches(BodyId tool, Contact[] contacts, ContactPatch[] patches, out int count)
+        {
+            int capacity = Math.Min(contacts?.Length ?? int.MaxValue, patches?.Length ?? int.MaxValue);
+            if (capacity == int.MaxValue || capacity == 0)
+                return proxBody_GetContactPatches(tool, IntPtr.Zero, IntPtr.Zero, 0, out count);
+            GCHandle pinContacts = contacts != null ? GCHandle.Alloc(contacts, GCHandleType.Pinned) : default(GCHandle);
+            GCHandle pinPatches = patches != null ? GCHandle.Alloc(patches, GCHandleType.Pinned) : default(GCHandle);
+            try
+            {
+                return proxBody_GetContactPatches(tool, contacts != null ? pinContacts.AddrOfPinnedObject() : IntPtr.Zero,
+                                                  patches != null ? pinPatches.AddrOfPinnedObject() : IntPtr.Zero,
+                                                  capacity, out count);
+            }
+            finally
+            {
+                if (contacts != null) pinContacts.Free();
+                if (patches != null) pinPatches.Free();
+            }
+        }
 
         /// <summary>proxBody_GetContacts into a managed array, pinned for the call.</summary>
         internal static Result GetContacts(BodyId tool, Contact[] contacts, out int count)

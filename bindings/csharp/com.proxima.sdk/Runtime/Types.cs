@@ -218,6 +218,18 @@ namespace Proxima
         public Feature FeatureTool, FeatureOther;
     }
 
+    /// <summary>proxContactPatch: the LMDs a contact stands for where the distance field
+    /// is flat (docs/patches.md); beside the contact it belongs to.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct ContactPatch
+    {
+        public int Count;        // LMDs the contact stands for, itself included (1: none merged into it)
+        readonly int reserved;
+        public double Extent;    // m: the farthest member's point on the tool from the contact's
+        public double Spread;    // m: how much farther from the other body the farthest member is
+        public double Angle;     // radians: the largest angle between a member's direction and the contact's
+    }
+
     /// <summary>proxWrench: force and torque on a tool, world frame.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct Wrench
@@ -287,14 +299,14 @@ namespace Proxima
         public double RadiusOverCutoff, MaxAngleDegrees, MaxSpreadOverCutoff;
     }
 
-    /// <summary>What the last step merged into patches and found crossing (proxPatchStats).</summary>
+    /// <summary>What the last step merged into patches, cut and found crossing (proxPatchStats).</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct PatchStats
     {
         public int Lmds, Patches, Merged, LargestPatch;
         public ulong IntersectingPairs;
         public int IntersectingBodies;
-        readonly int reserved;
+        public int CutNodePairs;   // node pairs the bounded search cut (World.LeafBudget)
     }
 
     [StructLayout(LayoutKind.Sequential)]

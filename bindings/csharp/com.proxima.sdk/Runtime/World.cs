@@ -159,7 +159,16 @@ namespace Proxima
             set { Native.Check(Native.proxWorld_SetPatchSettings(id, ref value)); }
         }
 
-        /// <summary>What the last Step merged into patches and found crossing.</summary>
+        /// <summary>The bounded search's budget (docs/patches.md): after this many triangle
+        /// pairs one pair's search gives one representative per patch-sized node pair;
+        /// 0: no bound. Changed from the next Step on.</summary>
+        public ulong LeafBudget
+        {
+            get { Native.Check(Native.proxWorld_GetLeafBudget(id, out ulong b)); return b; }
+            set { Native.Check(Native.proxWorld_SetLeafBudget(id, value)); }
+        }
+
+        /// <summary>What the last Step merged into patches, cut and found crossing.</summary>
         public PatchStats PatchStats
         {
             get { Native.Check(Native.proxWorld_GetPatchStats(id, out PatchStats s)); return s; }

@@ -60,6 +60,7 @@ namespace Proxima.Tests
             new object[] { "proxMeshInfo", typeof(MeshInfo) },
             new object[] { "proxBodyDef", typeof(BodyDef) },
             new object[] { "proxContact", typeof(Contact) },
+            new object[] { "proxContactPatch", typeof(ContactPatch) },
             new object[] { "proxWrench", typeof(Wrench) },
             new object[] { "proxPolylineInfo", typeof(PolylineInfo) },
             new object[] { "proxWorldStats", typeof(WorldStats) },
@@ -106,6 +107,7 @@ namespace Proxima.Tests
             new object[] { "proxContact.pointTool", typeof(Contact), "PointTool" },
             new object[] { "proxContact.distance", typeof(Contact), "Distance" },
             new object[] { "proxContact.featureOther", typeof(Contact), "FeatureOther" },
+            new object[] { "proxContactPatch.extent", typeof(ContactPatch), "Extent" },
             new object[] { "proxWrench.clipped", typeof(Wrench), "Clipped" },
             new object[] { "proxPolylineInfo.closed", typeof(PolylineInfo), "Closed" },
             new object[] { "proxDeviceDef.userData", typeof(DeviceDef), "UserData" },
@@ -126,6 +128,7 @@ namespace Proxima.Tests
             new object[] { "proxSearchStats.nodePairs", typeof(SearchStats), "NodePairs" },
             new object[] { "proxTrackStats.distanceEvaluations", typeof(TrackStats), "DistanceEvaluations" },
             new object[] { "proxPatchStats.intersectingPairs", typeof(PatchStats), "IntersectingPairs" },
+            new object[] { "proxPatchStats.cutNodePairs", typeof(PatchStats), "CutNodePairs" },
         };
 
         [TestCaseSource("Offsets")]
@@ -151,7 +154,7 @@ namespace Proxima.Tests
         {
             // A pinned GCHandle exists only for blittable types: arrays of these
             // cross P/Invoke without a copy.
-            foreach (object array in new object[] { new Contact[1], new Vec3[1], new Pose[1], new PolylineInfo[1] })
+            foreach (object array in new object[] { new Contact[1], new ContactPatch[1], new Vec3[1], new Pose[1], new PolylineInfo[1] })
                 GCHandle.Alloc(array, GCHandleType.Pinned).Free();
         }
     }

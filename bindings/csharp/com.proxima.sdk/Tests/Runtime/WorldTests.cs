@@ -193,8 +193,37 @@ namespace Proxima.Tests
                 Assert.AreEqual(merged.Lmds - merged.Patches, merged.Merged);
                 Assert.AreEqual(merged.Patches, tool.GetContacts().Length);
                 Assert.AreEqual(0UL, merged.IntersectingPairs);
+                // Each contact's patch: the counts add up to the LMDs before merging,
+                // and each keeps the rule (radius = the 5 mm cutoff, 0.2% of it, 5 degrees).
+                Contact[] contacts = tool.GetContacts(out ContactPatch[] patches);
+                Assert.AreEqual(contacts.Length, patches.Length);
+                int total = 0, largest = 0;
+                foreach (ContactPatch p in patches)
+                {
+                    Assert.GreaterOrEqual(p.Count, 1);
+                    Assert.LessOrEqual(p.Extent, 0.005 + 1e-12);
+                    Assert.LessOrEqual(p.Spread, 1e-5 + 1e-12);
+                    Assert.LessOrEqual(p.Angle, 5.0 * Math.PI / 180.0 + 1e-9);
+                    total += p.Count;
+                    largest = Math.Max(largest, p.Count);
+                }
+                Assert.AreEqual(merged.Lmds, total);
+                Assert.AreEqual(merged.LargestPatch, largest);
+                var few = new ContactPatch[2];
+                Assert.AreEqual(contacts.Length, tool.GetContacts(null, few), "the count, beyond the buffer");
+                Assert.AreEqual(patches[1].Count, few[1].Count);
+                Assert.AreEqual(0, merged.CutNodePairs);
+                // The bounded search: a budget of 100 triangle pairs cuts the rest.
+                Assert.AreEqual(100000UL, world.LeafBudget);
+                world.LeafBudget = 100;
+                Assert.AreEqual(100UL, world.LeafBudget);
+                world.Step();
+                Assert.Greater(world.PatchStats.CutNodePairs, 0);
+                Assert.Less(world.PatchStats.Lmds, merged.Lmds);
+                world.LeafBudget = 0;
                 world.PatchSettings = new PatchSettings { RadiusOverCutoff = 0, MaxAngleDegrees = 5, MaxSpreadOverCutoff = 0.002 };
                 world.Step();
+                Assert.AreEqual(0UL, world.LeafBudget, "kept when the patch rule changes");
                 Assert.AreEqual(merged.Lmds, tool.GetContacts().Length, "unmerged");
                 Assert.AreEqual(0, world.PatchStats.Merged);
                 double h = Math.Sqrt(0.5);
