@@ -206,7 +206,7 @@ TEST_F(Patches, ContactPatchesRefuseMisuseByName) {
 TEST_F(Patches, TheLeafBudgetCutsTheSearchAndSaysSo) {
   uint64_t budget = 0;
   ASSERT_OK(proxWorld_GetLeafBudget(world, &budget));
-  EXPECT_EQ(budget, 100000u);
+  EXPECT_EQ(budget, 50000u);
   EXPECT_FAILS(proxWorld_GetLeafBudget(world, nullptr), PROX_ERROR_INVALID_ARGUMENT, "leafPairs is NULL");
   EXPECT_FAILS(proxWorld_SetLeafBudget(proxWorldId{}, 5), PROX_ERROR_INVALID_HANDLE, "null");
   EXPECT_FAILS(proxWorld_GetLeafBudget(proxWorldId{}, &budget), PROX_ERROR_INVALID_HANDLE, "null");

@@ -181,7 +181,7 @@ class CliTest(unittest.TestCase):
         self.assertNotIn("bounded search", r.stdout)
         with open(json_path) as f:
             whole = json.load(f)
-        self.assertEqual((whole["patches"]["leaf_budget"], whole["patches"]["cut_node_pairs"]), (100000, 0))
+        self.assertEqual((whole["patches"]["leaf_budget"], whole["patches"]["cut_node_pairs"]), (50000, 0))
         r = run("lmd", floor, tool, "--leaf-budget", "1", "--json", json_path)
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("bounded search: past 1 leaf pairs,", r.stdout)

@@ -39,8 +39,10 @@ class ViewerHidTest(unittest.TestCase):
     def test_auto_picks_the_hid_device_and_it_moves_the_tool(self):
         for device in ("auto", "hid"):
             with self.subTest(device):
+                # 40 frames: the viewer is still running when the release comes
+                # at 0.3 s, even where the emulator is slow to send it.
                 r = emulate(["dualsense"], [(0, 0, pad(0)), (0, 0.3, pad(128))], "--headless", "--validation",
-                            "--device", device, "--frames", "20", "--size", "320x180")
+                            "--device", device, "--frames", "40", "--size", "320x180")
                 self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
                 m = re.search(r"hid device: (\d+) reports read, (\d+) malformed, \d+ outputs written, tool at "
                               r"(\S+) (\S+) ([^\s,]+)", r.stdout)

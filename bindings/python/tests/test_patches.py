@@ -84,7 +84,7 @@ def test_crossing_sheets_are_an_intersection(world, sheets):
 
 def test_leaf_budget_bounds_the_search_of_parallel_sheets(world, sheets):
     _, tool = sheets
-    assert world.leaf_budget == 100000
+    assert world.leaf_budget == 50000
     with pytest.raises(proxima.InvalidArgument, match="leaf_budget"):
         world.leaf_budget = -1
     with pytest.raises(proxima.InvalidArgument, match="leaf_budget"):

@@ -416,7 +416,7 @@ PROX_API proxResult proxWorld_GetPatchStats(proxWorldId world, proxPatchStats* s
  * most 8 of its triangle pairs tried closest first, instead of every
  * triangle pair below it. Where surfaces run parallel or cross over a large
  * area, the work is then bounded by that area over the patch radius
- * squared, not by the triangle count. 0: no bound; the default is 100000.
+ * squared, not by the triangle count. 0: no bound; the default is 50000.
  * Changes it from the next proxWorld_Step on (the pairs' cached results are
  * dropped); PROX_ERROR_BUSY while the threads run. Game thread. */
 PROX_API proxResult proxWorld_SetLeafBudget(proxWorldId world, uint64_t leafPairs);

@@ -57,7 +57,7 @@ struct PatchSettings {
   // many leaf pairs, one representative per patch-sized node pair
   // (global_search_precise); 0: no bound.
   std::uint64_t leaf_budget = kDefaultLeafBudget;
-  static constexpr std::uint64_t kDefaultLeafBudget = 100000;
+  static constexpr std::uint64_t kDefaultLeafBudget = 50000;
   bool enabled() const { return radius_over_cutoff > 0.0; }
   // The node pairs the bounded search cuts have both bounding spheres within
   // this radius: half the patch radius, so that all the points on the tool

@@ -214,7 +214,7 @@ namespace Proxima.Tests
                 Assert.AreEqual(patches[1].Count, few[1].Count);
                 Assert.AreEqual(0, merged.CutNodePairs);
                 // The bounded search: a budget of 100 triangle pairs cuts the rest.
-                Assert.AreEqual(100000UL, world.LeafBudget);
+                Assert.AreEqual(50000UL, world.LeafBudget);
                 world.LeafBudget = 100;
                 Assert.AreEqual(100UL, world.LeafBudget);
                 world.Step();
