@@ -318,6 +318,7 @@ TEST(ThreadsPatches, ParallelSheetsReachTheHapticLoopAsPatches) {
   ASSERT_OK(proxWorld_StartThreads(world, &def));
   const proxPatchSettings off{0.0, 5.0, 0.002};
   EXPECT_FAILS(proxWorld_SetPatchSettings(world, &off), PROX_ERROR_BUSY, "proxWorld_StopThreads");
+  EXPECT_FAILS(proxWorld_SetLeafBudget(world, 10), PROX_ERROR_BUSY, "proxWorld_StopThreads");
   // The global thread's search merged its LMDs as the step did, the local
   // thread tracks those patches, and the haptic loop has run on them.
   auto contacts = [&] {
@@ -334,6 +335,15 @@ TEST(ThreadsPatches, ParallelSheetsReachTheHapticLoopAsPatches) {
       << " contacts, " << step.patches << " patches in the step";
   EXPECT_LE(length(w.force), wd.force.maxForce + 1e-12);
   EXPECT_EQ(contacts(), step.patches);
+  // Local tracking's contacts carry their patches: each seed still stands
+  // for its members, and together for every LMD of the step.
+  std::vector<proxContactPatch> patches(static_cast<size_t>(step.patches));
+  int32_t n = 0;
+  ASSERT_OK(proxBody_GetContactPatches(tool, nullptr, patches.data(), step.patches, &n));
+  ASSERT_EQ(n, step.patches);
+  int32_t members = 0;
+  for (const proxContactPatch& p : patches) members += p.count;
+  EXPECT_EQ(members, step.lmds);
   proxSafetyStats safety{};
   EXPECT_OK(proxWorld_GetSafetyStats(world, &safety));
   EXPECT_EQ(safety.tornSnapshots, 0u);
