@@ -76,7 +76,7 @@ void add_scene_lines(DrawList& list, const FrameData& frame, const Scene& scene,
     add_segment(out, o, o + glm::dvec3(0.0, 0.0, a), 2.0f, {0.3f, 0.4f, 0.8f, 1.0f});
   }
   if (show.strings) {
-    const std::vector<double> shares = scene.force_shares(frame.contacts);
+    const std::vector<double> shares = scene.force_shares(frame.contacts, frame.patches);
     for (std::size_t i = 0; i < frame.contacts.size(); ++i) {
       const proxContact& c = frame.contacts[i];
       const float width = kStringWidthMin + kStringWidthGain * static_cast<float>(shares[i]);

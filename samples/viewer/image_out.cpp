@@ -65,11 +65,14 @@ void write_sidecar(const std::string& path, const Sidecar& s) {
     j.value(static_cast<long long>(std::lround(255.0 * static_cast<double>(s.background[k]))));
   j.end_array();
   j.key("contacts").begin_array();
-  for (const proxContact& c : s.frame->contacts) {
+  for (std::size_t i = 0; i < s.frame->contacts.size(); ++i) {
+    const proxContact& c = s.frame->contacts[i];
     j.begin_object();
     j.key("point_tool").vec3(c.pointTool);
     j.key("point_other").vec3(c.pointOther);
     j.field("distance", c.distance);
+    if (i < s.frame->patches.size())
+      j.key("patch_count").value(static_cast<long long>(s.frame->patches[i].count));
     j.end_object();
   }
   j.end_array();

@@ -216,15 +216,18 @@ void Scene::update(FrameData& frame, bool polylines) const {
   frame.reference_point = glm::dvec3(frame.model_tool * glm::dvec4(reference_local_, 1.0));
 
   int32_t count = 0;
-  proxResult r = proxBody_GetContacts(tool_, nullptr, 0, &count);
+  proxResult r = proxBody_GetContactPatches(tool_, nullptr, nullptr, 0, &count);
   if (r != PROX_ERROR_CAPACITY) check(r);
   frame.contacts.resize(static_cast<std::size_t>(count));
+  frame.patches.resize(static_cast<std::size_t>(count));
   if (count > 0) {
     // Local tracking may have found more since the size was asked: take what fits.
-    r = proxBody_GetContacts(tool_, frame.contacts.data(), count, &count);
+    r = proxBody_GetContactPatches(tool_, frame.contacts.data(), frame.patches.data(), count, &count);
     if (r != PROX_ERROR_CAPACITY) check(r);
-    frame.contacts.resize(
-        static_cast<std::size_t>(std::min<int32_t>(count, static_cast<int32_t>(frame.contacts.size()))));
+    const auto kept =
+        static_cast<std::size_t>(std::min<int32_t>(count, static_cast<int32_t>(frame.contacts.size())));
+    frame.contacts.resize(kept);
+    frame.patches.resize(kept);
   }
   check(proxBody_GetWrench(tool_, &frame.wrench));
 
@@ -291,15 +294,18 @@ proxPose Scene::tool_pose() const {
   return p;
 }
 
-std::vector<double> Scene::force_shares(const std::vector<proxContact>& contacts) const {
+std::vector<double> Scene::force_shares(const std::vector<proxContact>& contacts,
+                                        const std::vector<proxContactPatch>& patches) const {
   std::vector<double> w;
   double sum = 0.0;
-  for (const proxContact& c : contacts) {
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const proxContact& c = contacts[i];
     const double d = std::max(c.distance, force_.safetyDistance);
     double f = 0.0;
     if (d < cutoff_) {
       f = force_.curve == PROX_FORCE_LINEAR ? (cutoff_ - d) / (cutoff_ - force_.safetyDistance)
                                             : std::exp(-(d - force_.safetyDistance) / force_.decayLength);
+      if (i < patches.size()) f *= std::max(1, patches[i].count);  // a patch pushes as its count would
     }
     w.push_back(f);
     sum += f;

@@ -35,6 +35,7 @@ struct FrameData {
   proxPose tool_pose{}, device_pose{};  // the proxy's and the device's
   glm::dvec3 reference_point{0.0};      // the tool's, world: where the force is drawn
   std::vector<proxContact> contacts;
+  std::vector<proxContactPatch> patches;  // contacts[i]'s patch: how many LMDs it stands for
   std::vector<Polyline> polylines;
   bool polylines_valid = false;  // computed at polylines_pose: kept while the tool stays there
   proxPose polylines_pose{};
@@ -77,7 +78,9 @@ class Scene {
   double cutoff() const { return cutoff_; }
   const proxForceSettings& force() const { return force_; }
   // Each contact's share of the summed force magnitude, by the force curve.
-  std::vector<double> force_shares(const std::vector<proxContact>& contacts) const;
+  // Each contact's share of the summed force, a patch weighing its count.
+  std::vector<double> force_shares(const std::vector<proxContact>& contacts,
+                                   const std::vector<proxContactPatch>& patches) const;
 
  private:
   void build(const Options& options, const std::string& path_a, const std::string& path_b);

@@ -157,8 +157,10 @@ class ViewerTest(unittest.TestCase):
 
     def test_strings_are_exactly_where_the_contacts_project(self):
         sidecar = self.near_strings[1]
-        # The near scene's 8 LMDs, two of them one patch (docs/patches.md): 7 contacts.
+        # The near scene's 8 LMDs, two of them one patch (docs/patches.md): 7 contacts, and the
+        # sidecar says which stands for two.
         self.assertEqual(len(sidecar["contacts"]), 7)
+        self.assertEqual(sorted(c["patch_count"] for c in sidecar["contacts"]), [1, 1, 1, 1, 1, 1, 2])
         self.assert_changes_follow(self.near_strings, self.near_none, string_segments(sidecar), STRING_RADIUS,
                                    on_ramp, "string")
 
