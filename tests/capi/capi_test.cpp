@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "expect.h"
+#include "mesh_arrays.h"
 
 #include <cmath>
 #include <cstdio>
@@ -23,14 +24,7 @@ struct Cube {
     const double p[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
     for (double x : p) positions.push_back(x * s);
   }
-  proxMeshDef def() const {
-    proxMeshDef d = proxDefaultMeshDef();
-    d.positions = positions.data();
-    d.vertexCount = static_cast<uint32_t>(positions.size() / 3);
-    d.indices = indices.data();
-    d.triangleCount = static_cast<uint32_t>(indices.size() / 3);
-    return d;
-  }
+  proxMeshDef def() const { return capi_test::mesh_def(positions, indices); }
 };
 
 proxPose at(double x, double y = 0, double z = 0) { return {{x, y, z}, {1, 0, 0, 0}}; }

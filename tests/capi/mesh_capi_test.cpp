@@ -1,7 +1,8 @@
 // proxMesh_GetTriangles: the mesh handed back is the one given, after the
 // documented welding and dropping, checked against an independent reading of
 // the input (the triangles as position triples) and, for files, against the
-// file parsed here and a closed cube's volume.
+// file parsed here and a closed cube's volume. proxWorld_LoadMeshFromMemory:
+// the same meshes as from the files, and its misuse refused by name.
 #include "expect.h"
 
 #include <proxima/proxima.h>
@@ -14,6 +15,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -202,6 +204,91 @@ TEST_F(MeshTriangles, BunnyObjAsTheFileSaysAfterWelding) {
   ASSERT_OK(proxWorld_LoadMesh(world_, path.c_str(), &mesh));
   const Triangles got = get_triangles(mesh);
   EXPECT_EQ(triples(got.positions, got.indices, false), triples(positions, indices, true));
+}
+
+std::vector<unsigned char> file_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  EXPECT_TRUE(in) << path;
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The mesh of a file's bytes is the file's, and the bytes are not kept:
+// overwriting them afterwards changes nothing.
+void expect_same_from_memory(proxWorldId world, const std::string& path, const std::string& name) {
+  SCOPED_TRACE(name);
+  proxMeshId from_file{}, from_memory{};
+  ASSERT_OK(proxWorld_LoadMesh(world, path.c_str(), &from_file));
+  std::vector<unsigned char> bytes = file_bytes(path);
+  ASSERT_OK(proxWorld_LoadMeshFromMemory(world, bytes.data(), bytes.size(), name.c_str(), &from_memory));
+  std::fill(bytes.begin(), bytes.end(), static_cast<unsigned char>(0));
+  const Triangles a = get_triangles(from_file), b = get_triangles(from_memory);
+  EXPECT_GT(a.indices.size(), 0u);
+  EXPECT_EQ(a.positions, b.positions);
+  EXPECT_EQ(a.indices, b.indices);
+}
+
+TEST_F(MeshTriangles, FromMemoryTheSameMeshAsFromTheFile) {
+  const std::string assets = PROX_SHARED_ASSETS_DIR;
+  expect_same_from_memory(world_, assets + "/bunny.obj", "bunny.obj");
+  expect_same_from_memory(world_, assets + "/bunny.obj", "BUNNY.OBJ");  // the extension in any case
+#if PROX_WITH_GLTF_TESTS
+  expect_same_from_memory(world_, assets + "/gltf/Box.glb", "Box.glb");
+  expect_same_from_memory(world_, assets + "/gltf/Duck.glb", "Duck.glb");
+  // A GLB is known by its magic, whatever its name says.
+  expect_same_from_memory(world_, assets + "/gltf/Box.glb", "asset-42");
+#endif
+}
+
+TEST_F(MeshTriangles, FromMemoryRefusesMisuseByName) {
+  const std::vector<unsigned char> obj = file_bytes(std::string(PROX_SHARED_ASSETS_DIR) + "/bunny.obj");
+  proxMeshId mesh{};
+  EXPECT_FAILS(proxWorld_LoadMeshFromMemory(world_, obj.data(), obj.size(), "b.obj", nullptr),
+               PROX_ERROR_INVALID_ARGUMENT, "mesh is NULL");
+  EXPECT_FAILS(proxWorld_LoadMeshFromMemory(proxWorldId{}, obj.data(), obj.size(), "b.obj", &mesh),
+               PROX_ERROR_INVALID_HANDLE, "null");
+  EXPECT_FAILS(proxWorld_LoadMeshFromMemory(world_, obj.data(), obj.size(), nullptr, &mesh),
+               PROX_ERROR_INVALID_ARGUMENT, "name is NULL");
+  EXPECT_FAILS(proxWorld_LoadMeshFromMemory(world_, nullptr, 10, "b.obj", &mesh), PROX_ERROR_INVALID_ARGUMENT,
+               "data is NULL");
+  EXPECT_FAILS(proxWorld_LoadMeshFromMemory(world_, obj.data(), 0, "b.obj", &mesh),
+               PROX_ERROR_INVALID_ARGUMENT, "b.obj: size is 0");
+  EXPECT_FAILS(proxWorld_LoadMeshFromMemory(world_, obj.data(), obj.size(), "b.stl", &mesh),
+               PROX_ERROR_UNSUPPORTED, "b.stl: unsupported file type '.stl'");
+  const std::string bad = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n";
+  EXPECT_FAILS(proxWorld_LoadMeshFromMemory(world_, bad.data(), bad.size(), "broken.obj", &mesh),
+               PROX_ERROR_PARSE, "broken.obj:4");
+  EXPECT_EQ(mesh.index1, 0u) << "no id with an error";
+#if PROX_WITH_GLTF_TESTS
+  // The GLB header (magic, version 2, a length of 255) and nothing after it.
+  const std::string glb("glTF\x02\x00\x00\x00\xff\x00\x00\x00", 12);
+  EXPECT_FAILS(proxWorld_LoadMeshFromMemory(world_, glb.data(), glb.size(), "short.glb", &mesh),
+               PROX_ERROR_PARSE, "short.glb");
+  // A .gltf whose buffer is a file beside it: from memory, no file is read.
+  const std::vector<unsigned char> gltf = file_bytes(
+      std::string(PROX_SHARED_ASSETS_DIR) + "/gltf/TriangleWithoutIndices/TriangleWithoutIndices.gltf");
+  EXPECT_FAILS(proxWorld_LoadMeshFromMemory(world_, gltf.data(), gltf.size(), "Triangle.gltf", &mesh),
+               PROX_ERROR_FILE, "external buffer 'triangleWithoutIndices.bin' cannot be read");
+  // ... and with that buffer embedded as a data: URI it loads: one triangle.
+  const std::vector<unsigned char> bin = file_bytes(
+      std::string(PROX_SHARED_ASSETS_DIR) + "/gltf/TriangleWithoutIndices/triangleWithoutIndices.bin");
+  static const char* kBase64 = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string encoded;
+  for (std::size_t i = 0; i < bin.size(); i += 3) {
+    const uint32_t n = (uint32_t{bin[i]} << 16) | (i + 1 < bin.size() ? uint32_t{bin[i + 1]} << 8 : 0u) |
+                       (i + 2 < bin.size() ? uint32_t{bin[i + 2]} : 0u);
+    for (int k = 0; k < 4; ++k)
+      encoded += (i + static_cast<std::size_t>(k) > bin.size()) ? '=' : kBase64[(n >> (18 - 6 * k)) & 63];
+  }
+  std::string text(gltf.begin(), gltf.end());
+  const std::string uri = "\"triangleWithoutIndices.bin\"";
+  const std::size_t at = text.find(uri);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, uri.size(), "\"data:application/octet-stream;base64," + encoded + "\"");
+  ASSERT_OK(proxWorld_LoadMeshFromMemory(world_, text.data(), text.size(), "Triangle.gltf", &mesh));
+  proxMeshInfo info{};
+  ASSERT_OK(proxMesh_GetInfo(mesh, &info));
+  EXPECT_EQ(info.triangleCount, 1u);
+#endif
 }
 
 #if PROX_WITH_GLTF_TESTS

@@ -2,6 +2,8 @@
 // tests (docs/patches.md).
 #pragma once
 
+#include "mesh_arrays.h"
+
 #include <proxima/proxima.h>
 
 #include <cstdint>
@@ -27,14 +29,7 @@ struct Sheet {
           indices.insert(indices.end(), {a, b, d, a, d, c});
       }
   }
-  proxMeshDef def() const {
-    proxMeshDef d = proxDefaultMeshDef();
-    d.positions = positions.data();
-    d.vertexCount = static_cast<uint32_t>(positions.size() / 3);
-    d.indices = indices.data();
-    d.triangleCount = static_cast<uint32_t>(indices.size() / 3);
-    return d;
-  }
+  proxMeshDef def() const { return mesh_def(positions, indices); }
 };
 
 }  // namespace capi_test

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "expect.h"
+#include "mesh_arrays.h"
 
 #include <proxima/proxima.h>
 
@@ -45,11 +46,7 @@ class TwoCubes : public ::testing::Test {
     const double corners[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
     positions.clear();
     for (const double c : corners) positions.push_back(0.1 * c);
-    proxMeshDef md = proxDefaultMeshDef();
-    md.positions = positions.data();
-    md.vertexCount = 8;
-    md.indices = indices.data();
-    md.triangleCount = 12;
+    const proxMeshDef md = mesh_def(positions, indices);
     ASSERT_OK(proxWorld_CreateMesh(world, &md, &mesh));
     proxBodyDef bd = proxDefaultBodyDef();
     bd.mesh = mesh;

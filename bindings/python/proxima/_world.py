@@ -115,6 +115,23 @@ class World:
         check(lib.proxWorld_LoadMesh(self._idp[0], _path(path, "load_mesh: path"), idp))
         return self._mesh(idp)
 
+    def load_mesh_bytes(self, data, name):
+        """A mesh from a file's bytes already in memory (bytes, bytearray,
+        memoryview or anything with the buffer protocol): ``name`` is the
+        file's name, whose extension says the format (.obj, .gltf, .glb) and
+        which errors name. A .gltf must embed its buffers; nothing is read
+        from disk."""
+        try:
+            view = memoryview(data)
+        except TypeError:
+            raise invalid(f"load_mesh_bytes: data must be bytes-like, not {type(data).__name__}") from None
+        if not isinstance(name, str):
+            raise invalid(f"load_mesh_bytes: name must be a str, not {name!r}")
+        buffer = ffi.from_buffer(view.cast("B") if view.contiguous else view.tobytes())
+        idp = ffi.new("proxMeshId*")
+        check(lib.proxWorld_LoadMeshFromMemory(self._idp[0], buffer, len(buffer), name.encode(), idp))
+        return self._mesh(idp)
+
     def create_mesh(self, vertices, triangles):
         """A mesh from an (N, 3) array of vertex positions and an (M, 3)
         integer array of vertex indices per triangle, counter-clockwise seen

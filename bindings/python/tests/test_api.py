@@ -64,6 +64,31 @@ def test_mesh_triangles_of_the_bunny_file(world):
     assert _triples(vertices, triangles) == _triples(v, t)
 
 
+def test_load_mesh_bytes_is_the_files_mesh(world):
+    data = BUNNY.read_bytes()
+    expected = world.load_mesh(BUNNY).triangles()
+    for given in (data, bytearray(data), memoryview(data)):
+        vertices, triangles = world.load_mesh_bytes(given, "bunny.obj").triangles()
+        np.testing.assert_array_equal(vertices, expected[0])
+        np.testing.assert_array_equal(triangles, expected[1])
+    box = ASSETS / "gltf" / "Box.glb"
+    for a, b in zip(world.load_mesh_bytes(box.read_bytes(), "Box.glb").triangles(), world.load_mesh(box).triangles()):
+        np.testing.assert_array_equal(a, b)
+    with pytest.raises(proxima.InvalidArgument, match="data must be bytes-like"):
+        world.load_mesh_bytes("v 0 0 0", "a.obj")
+    with pytest.raises(proxima.InvalidArgument, match="name must be a str"):
+        world.load_mesh_bytes(data, None)
+    with pytest.raises(proxima.InvalidArgument, match="a.obj: size is 0"):
+        world.load_mesh_bytes(b"", "a.obj")
+    with pytest.raises(proxima.Unsupported, match="a.stl"):
+        world.load_mesh_bytes(data, "a.stl")
+    with pytest.raises(proxima.ParseError, match="broken.obj:1"):
+        world.load_mesh_bytes(b"f 1 2 3\n", "broken.obj")
+    gltf = ASSETS / "gltf" / "TriangleWithoutIndices" / "TriangleWithoutIndices.gltf"
+    with pytest.raises(proxima.FileError, match="embed its buffers"):
+        world.load_mesh_bytes(gltf.read_bytes(), gltf.name)
+
+
 def test_mesh_warnings_name_what_loading_skipped(world, tmp_path):
     # One triangle whose unused NORMAL accessor runs past its buffer view:
     # it loads, and the warning says which attribute was skipped.

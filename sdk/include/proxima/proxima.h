@@ -190,6 +190,15 @@ PROX_API proxResult proxWorld_CreateMesh(proxWorldId world, const proxMeshDef* d
  * scene is merged into one mesh with its node transforms applied. Game thread. */
 PROX_API proxResult proxWorld_LoadMesh(proxWorldId world, const char* path, proxMeshId* mesh);
 
+/* proxWorld_LoadMesh from a file's bytes already in memory (an engine's asset
+ * package, a download): `name` is the file's name, whose extension says the
+ * format (.obj, .gltf, .glb; bytes starting with the GLB magic are read as
+ * GLB whatever the name) and which errors name. Nothing is read from disk: a
+ * .gltf must embed its buffers (data: URIs). The bytes are the caller's and
+ * are not kept. Game thread. */
+PROX_API proxResult proxWorld_LoadMeshFromMemory(proxWorldId world, const void* data, uint64_t size,
+                                                 const char* name, proxMeshId* mesh);
+
 /* Destroys a mesh; fails while bodies use it. Game thread. */
 PROX_API proxResult proxMesh_Destroy(proxMeshId mesh);
 

@@ -1,4 +1,4 @@
-// Meshes: from arrays or files (OBJ, glTF), their information.
+// Meshes: from arrays, files or files' bytes in memory (OBJ, glTF), their information.
 #include "capi/common.h"
 
 #include "io/obj.h"
@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <cstring>
 #include <mutex>
+#include <string>
+#include <vector>
 
 using namespace prox;
 using namespace prox::capi;
@@ -57,6 +59,54 @@ proxMeshId add_mesh(proxWorldId world_id, runtime::World& world, const MeshInput
   return make_mesh_id(world_id, h);
 }
 
+constexpr uint64_t kMaxMemoryMesh = uint64_t{1} << 32;
+
+// The format of `name` by its extension, lower case ("obj", "gltf", "glb").
+std::string extension_of(const std::string& name) {
+  const std::size_t dot = name.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : name.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+// A mesh from the file `name`, or, when `bytes` is given, from that file's
+// bytes already in memory (then a GLB is also known by its magic, and a
+// .gltf's buffers must be embedded: nothing is read from disk).
+proxMeshId load_mesh(proxWorldId world, runtime::World& w, const std::string& name,
+                     std::vector<unsigned char>* bytes) {
+  std::string ext = extension_of(name);
+  if (bytes && bytes->size() >= 4 && std::memcmp(bytes->data(), "glTF", 4) == 0) ext = "glb";
+  if (ext == "obj") {
+    io::ObjData obj;
+    check(bytes ? io::parse_obj(std::string(bytes->begin(), bytes->end()), name, obj)
+                : io::read_obj(name, obj));
+    return add_mesh(world, w,
+                    {obj.positions.data(), static_cast<uint32_t>(obj.positions.size() / 3),
+                     obj.indices.data(), static_cast<uint32_t>(obj.indices.size() / 3)},
+                    name);
+  }
+#if PROX_WITH_GLTF
+  if (ext == "gltf" || ext == "glb") {
+    std::vector<io::GltfMesh> parts;
+    std::vector<std::string> warnings;
+    io::GltfLoadOptions options;
+    options.external_buffers = bytes == nullptr;
+    check(bytes ? io::load_gltf_bytes(std::move(*bytes), name, options, parts, &warnings)
+                : io::load_gltf(name, options, parts, &warnings));
+    if (parts.empty()) fail(PROX_ERROR_INVALID_MESH, name + ": the scene has no triangles");
+    const io::GltfMesh& m = parts.front();
+    const proxMeshId id = add_mesh(world, w,
+                                   {m.positions.data(), static_cast<uint32_t>(m.positions.size() / 3),
+                                    m.indices.data(), static_cast<uint32_t>(m.indices.size() / 3)},
+                                   name);
+    keep_warnings(id, warnings);
+    return id;
+  }
+#endif
+  fail(PROX_ERROR_UNSUPPORTED,
+       name + ": unsupported file type '." + ext + "' (.obj, .gltf and .glb are read)");
+}
+
 }  // namespace
 
 extern "C" {
@@ -86,35 +136,26 @@ proxResult proxWorld_LoadMesh(proxWorldId world, const char* path, proxMeshId* m
     runtime::World& w = world_of(world);
     need_stopped(w);
     need(path, "path");
-    std::string p(path);
-    std::string ext = p.substr(p.find_last_of('.') == std::string::npos ? p.size() : p.find_last_of('.') + 1);
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == "obj") {
-      io::ObjData obj;
-      check(io::read_obj(p, obj));
-      *mesh = add_mesh(world, w,
-                       {obj.positions.data(), static_cast<uint32_t>(obj.positions.size() / 3),
-                        obj.indices.data(), static_cast<uint32_t>(obj.indices.size() / 3)},
-                       p);
-      return;
-    }
-#if PROX_WITH_GLTF
-    if (ext == "gltf" || ext == "glb") {
-      std::vector<io::GltfMesh> parts;
-      std::vector<std::string> warnings;
-      check(io::load_gltf(p, io::GltfLoadOptions{}, parts, &warnings));
-      if (parts.empty()) fail(PROX_ERROR_INVALID_MESH, p + ": the scene has no triangles");
-      const io::GltfMesh& m = parts.front();
-      *mesh = add_mesh(world, w,
-                       {m.positions.data(), static_cast<uint32_t>(m.positions.size() / 3), m.indices.data(),
-                        static_cast<uint32_t>(m.indices.size() / 3)},
-                       p);
-      keep_warnings(*mesh, warnings);
-      return;
-    }
-#endif
-    fail(PROX_ERROR_UNSUPPORTED,
-         p + ": unsupported file type '." + ext + "' (.obj, .gltf and .glb are read)");
+    *mesh = load_mesh(world, w, path, nullptr);
+  });
+}
+
+proxResult proxWorld_LoadMeshFromMemory(proxWorldId world, const void* data, uint64_t size, const char* name,
+                                        proxMeshId* mesh) {
+  return guard("proxWorld_LoadMeshFromMemory", [&] {
+    need(mesh, "mesh");
+    *mesh = proxMeshId{};
+    runtime::World& w = world_of(world);
+    need_stopped(w);
+    need(name, "name");
+    if (size == 0) fail(PROX_ERROR_INVALID_ARGUMENT, std::string(name) + ": size is 0 (no bytes to read)");
+    need(data, "data");
+    if (size > kMaxMemoryMesh)
+      fail(PROX_ERROR_INVALID_ARGUMENT, std::string(name) + ": " + std::to_string(size) +
+                                            " bytes, more than the 4 GiB a mesh file may have");
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    std::vector<unsigned char> copy(bytes, bytes + size);
+    *mesh = load_mesh(world, w, name, &copy);
   });
 }
 

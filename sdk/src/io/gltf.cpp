@@ -50,6 +50,7 @@ constexpr std::uint64_t kMaxU32 = 0xFFFFFFFFu;
 // tinygltf's file system: external buffers only (images are never opened).
 struct FsContext {
   std::string io_error;  // the first read failure, for an IoError
+  bool allowed = true;   // GltfLoadOptions::external_buffers
 };
 
 // Always "exists", so that tinygltf tries only the path beside the .gltf (not
@@ -57,9 +58,14 @@ struct FsContext {
 bool fs_file_exists(const std::string&, void*) { return true; }
 std::string fs_expand_path(const std::string& path, void*) { return path; }
 bool fs_read_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
-  const Status status = read_file(path, *out);
-  if (status) return true;
   auto* context = static_cast<FsContext*>(user);
+  const Status status =
+      context->allowed
+          ? read_file(path, *out)
+          : Status{StatusCode::IoError,
+                   "the external buffer '" + std::filesystem::path(path).filename().string() +
+                       "' cannot be read: glTF from memory must embed its buffers (data: URIs) or be a GLB"};
+  if (status) return true;
   if (context->io_error.empty()) context->io_error = status.message();
   if (err != nullptr) *err += status.message() + "\n";
   return false;
@@ -711,6 +717,7 @@ Status load(std::vector<unsigned char>& bytes, const std::string& path, const Gl
   if (!status) return status;
 
   FsContext fs_context;
+  fs_context.allowed = options.external_buffers;
   tinygltf::TinyGLTF reader;
   reader.SetFsCallbacks({&fs_file_exists, &fs_expand_path, &fs_read_file, &fs_write_file, &fs_context});
   reader.SetImageLoader(&skip_image, nullptr);

@@ -26,6 +26,10 @@ struct GltfMesh {
 
 struct GltfLoadOptions {
   GltfSceneMode mode = GltfSceneMode::Merged;
+  // Whether a .gltf's buffers may be read from files beside it. Off for bytes
+  // that came from memory, where no file is theirs: such a buffer is then
+  // an IoError that names its URI (data: URIs and GLB chunks are read either way).
+  bool external_buffers = true;
 };
 
 // Reads the default scene of `path` (scene 0 if the file names none; every

@@ -30,6 +30,17 @@ using Clock = std::chrono::steady_clock;
 
 bool finite(double v) { return std::isfinite(v); }
 
+// What a device is handed: the gate's output, whether the gate changed it,
+// the closest distance, and the world's distances a device maps it by.
+DeviceWrench device_wrench(const Wrench& w, bool limited, double closest, const WorldSettings& world) {
+  return {{w.force.x, w.force.y, w.force.z},
+          {w.torque.x, w.torque.y, w.torque.z},
+          limited,
+          closest,
+          world.force.safety_distance,
+          world.cutoff};
+}
+
 // A device's pose as a Pose, or false when it is not one (non-finite, or a
 // quaternion too far from unit length to be a rotation).
 bool pose_from_device(const DevicePose& d, Pose& pose) {
@@ -327,12 +338,7 @@ void Threads::haptic_main() {
     for (auto& tool : tools_) {
       const Wrench w = tool->filter.step(Wrench{}, false, period);
       if (tool->device.write_wrench) {
-        const DeviceWrench out{{w.force.x, w.force.y, w.force.z},
-                               {w.torque.x, w.torque.y, w.torque.z},
-                               true,
-                               kNoContact,
-                               world_.settings_.force.safety_distance,
-                               world_.settings_.cutoff};
+        const DeviceWrench out = device_wrench(w, true, kNoContact, world_.settings_);
         tool->device.write_wrench(tool->device.user, &out);
       }
       tool->wrench.store({w});
@@ -395,12 +401,7 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
   const Wrench w = tool.filter.step(target, valid, dt, &limited);
   if (limited) count(limited_ticks_);
   if (tool.device.write_wrench) {
-    const DeviceWrench out{{w.force.x, w.force.y, w.force.z},
-                           {w.torque.x, w.torque.y, w.torque.z},
-                           limited,
-                           closest,
-                           world_.settings_.force.safety_distance,
-                           world_.settings_.cutoff};
+    const DeviceWrench out = device_wrench(w, limited, closest, world_.settings_);
     tool.device.write_wrench(tool.device.user, &out);
   }
   tool.wrench.store({w});

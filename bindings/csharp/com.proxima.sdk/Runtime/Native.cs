@@ -149,6 +149,9 @@ namespace Proxima
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxWorld_LoadMesh(WorldId world, byte[] utf8Path, out MeshId mesh);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxWorld_LoadMeshFromMemory(WorldId world, byte[] data, ulong size, byte[] utf8Name,
+                                                                   out MeshId mesh);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxMesh_Destroy(MeshId mesh);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxMesh_GetInfo(MeshId mesh, out MeshInfo info);

@@ -96,6 +96,18 @@ namespace Proxima
             return new Mesh(mesh);
         }
 
+        /// <summary>A mesh from a file's bytes already in memory (a TextAsset's bytes, an
+        /// asset bundle, a download): name is the file's name, whose extension says the
+        /// format (.obj, .gltf, .glb) and which errors name. A .gltf must embed its
+        /// buffers; nothing is read from disk.</summary>
+        public Mesh LoadMesh(byte[] data, string name)
+        {
+            if (data == null) throw new ArgumentNullException(nameof(data));
+            Native.Check(Native.proxWorld_LoadMeshFromMemory(id, data, (ulong)data.LongLength,
+                                                             Native.Utf8(name, nameof(name)), out MeshId mesh));
+            return new Mesh(mesh);
+        }
+
         /// <summary>A body: the mesh at a pose. Tools get contacts and forces, with
         /// torques about referencePoint (in the body's frame).</summary>
         public Body CreateBody(Mesh mesh, BodyType type, Pose pose, Vec3 referencePoint = default(Vec3))

@@ -42,6 +42,22 @@ namespace Proxima.Tests
         }
 
         [Test]
+        public void LoadMeshFromBytesIsTheFilesMesh()
+        {
+            string path = Support.Asset("bunny.obj");
+            Mesh fromFile = world.LoadMesh(path);
+            Mesh fromBytes = world.LoadMesh(File.ReadAllBytes(path), "bunny.obj");
+            fromFile.GetTriangles(out double[] p1, out uint[] i1);
+            fromBytes.GetTriangles(out double[] p2, out uint[] i2);
+            Assert.AreEqual(p1, p2);
+            Assert.AreEqual(i1, i2);
+            Support.Throws(Result.Unsupported, "a.stl", () => world.LoadMesh(File.ReadAllBytes(path), "a.stl"));
+            Support.Throws(Result.InvalidArgument, "size is 0", () => world.LoadMesh(new byte[0], "a.obj"));
+            Assert.Throws<ArgumentNullException>(() => world.LoadMesh((byte[])null, "a.obj"));
+            Assert.Throws<ArgumentNullException>(() => world.LoadMesh(new byte[] { 1 }, null));
+        }
+
+        [Test]
         public void WarningsNameWhatLoadingSkipped()
         {
             // One triangle whose unused NORMAL accessor runs past its buffer view.
@@ -65,6 +81,11 @@ namespace Proxima.Tests
                 Assert.AreEqual(1, warnings.Length, string.Join("|", warnings));
                 StringAssert.Contains("NORMAL", warnings[0]);
                 Assert.AreEqual(0, world.LoadMesh(Support.Asset("bunny.obj")).Warnings.Length);
+                // The same bytes from memory: the same mesh, the same warning.
+                Mesh fromBytes = world.LoadMesh(System.Text.Encoding.UTF8.GetBytes(gltf), "bad-normal.gltf");
+                Assert.AreEqual(1u, fromBytes.Info.TriangleCount);
+                Assert.AreEqual(1, fromBytes.Warnings.Length);
+                StringAssert.Contains("bad-normal.gltf", fromBytes.Warnings[0]);
             }
             finally
             {
