@@ -152,6 +152,25 @@ inline bool g3_rejects(const NodePair& p) {
   return misses(p.a, dir, p.a.cone.axis, p.two_sided_a) || misses(p.b, -dir, p.axis_b, p.two_sided_b);
 }
 
+// Which node of a pair the descents split: A's unless B's is the larger
+// (or A's is a leaf and B's is not).
+inline bool split_a(const SnchNode& na, const SnchNode& nb) {
+  return nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius);
+}
+
+// Calls f(ia', ib') for the two child pairs of the inner node pair (ia, ib).
+template <typename F>
+void for_child_pairs(const Snch& ta, const Snch& tb, std::uint32_t ia, std::uint32_t ib, F f) {
+  const SnchNode &na = ta.node(ia), &nb = tb.node(ib);
+  if (split_a(na, nb)) {
+    f(na.first, ib);
+    f(na.second, ib);
+  } else {
+    f(ia, nb.first);
+    f(ia, nb.second);
+  }
+}
+
 // Simultaneous descent of both trees; `use_cones` switches G2/G3 on;
 // `use_boxes` adds the box test to G1's sphere test (the same pairs within the
 // cutoff reach the leaves, far fewer beyond it); `leaf` is called for every
@@ -199,7 +218,7 @@ void descend(const PairQuery& q, const Frames& frames, bool use_cones, bool use_
       leaf(na.first, nb.first);
     } else if (cut(ia, ib)) {
       continue;
-    } else if (nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius)) {
+    } else if (split_a(na, nb)) {
       stack.emplace_back(na.second, ib);
       stack.emplace_back(na.first, ib);
     } else {
@@ -232,16 +251,18 @@ inline double node_pair_lower_bound(const PairQuery& q, const Frames& frames, st
   return std::max(spheres, box_lower_bound(frames.axes, ba, bb, frames.b_to_a.apply(bb.center) - ba.center));
 }
 
-// The leaf pairs below node pair (ia, ib) best first, until `leaf(ta, tb)`
-// returns true or `max_leaves` leaf pairs were tried: the representative of
-// a cut node pair. Best is the smaller lower bound; where lower bounds tie
-// (flat, parallel boxes all bound at the gap) the pair whose spheres' centres
-// are closer, by adding a thousandth of that distance. `heap` is scratch.
+// A node pair in a best-first search's heap, smallest key on top.
 struct RankedNodePair {
   double key;
   std::uint32_t a, b;
   bool operator<(const RankedNodePair& o) const { return key > o.key; }  // min-heap
 };
+
+// The leaf pairs below node pair (ia, ib) best first, until `leaf(ta, tb)`
+// returns true or `max_leaves` leaf pairs were tried: the representative of
+// a cut node pair. Best is the smaller lower bound; where lower bounds tie
+// (flat, parallel boxes all bound at the gap) the pair whose spheres' centres
+// are closer, by adding a thousandth of that distance. `heap` is scratch.
 
 template <typename Leaf>
 bool first_leaf_pair(const PairQuery& q, const Frames& frames, std::uint32_t ia, std::uint32_t ib,
@@ -265,12 +286,8 @@ bool first_leaf_pair(const PairQuery& q, const Frames& frames, std::uint32_t ia,
     if (na.is_leaf() && nb.is_leaf()) {
       ++tried;
       if (leaf(na.first, nb.first)) return true;
-    } else if (nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius)) {
-      rank(na.first, p.b);
-      rank(na.second, p.b);
     } else {
-      rank(p.a, nb.first);
-      rank(p.a, nb.second);
+      for_child_pairs(ta, tb, p.a, p.b, rank);
     }
   }
   return false;

@@ -192,22 +192,15 @@ double closest_pair(const PairQuery& q, double bound, bool first_below, std::uin
   double best = INFINITY;
   if (ta.nodes().empty() || tb.nodes().empty()) return best;
   double limit = bound;
-  struct Item {
-    double lower;  // no pair below these nodes is closer
-    std::uint32_t a, b;
-    bool operator<(const Item& o) const { return lower > o.lower; }  // min-heap
-  };
-  auto lower_bound = [&](std::uint32_t ia, std::uint32_t ib) {
-    return detail::node_pair_lower_bound(q, frames, ia, ib);
-  };
-  std::vector<Item> heap;
+  // Keyed by the lower bound: no pair below these nodes is closer.
+  std::vector<detail::RankedNodePair> heap;
   heap.reserve(1024);
-  heap.push_back({lower_bound(0u, 0u), 0u, 0u});
+  heap.push_back({detail::node_pair_lower_bound(q, frames, 0u, 0u), 0u, 0u});
   while (!heap.empty()) {
     std::pop_heap(heap.begin(), heap.end());
-    const Item item = heap.back();
+    const detail::RankedNodePair item = heap.back();
     heap.pop_back();
-    if (item.lower > limit) break;  // everything left is farther
+    if (item.key > limit) break;  // everything left is farther
     const SnchNode& na = ta.node(item.a);
     const SnchNode& nb = tb.node(item.b);
     if (na.is_leaf() && nb.is_leaf()) {
@@ -226,19 +219,12 @@ double closest_pair(const PairQuery& q, double bound, bool first_below, std::uin
       }
       continue;
     }
-    auto push = [&](std::uint32_t ia, std::uint32_t ib) {
-      const double lower = lower_bound(ia, ib);
+    detail::for_child_pairs(ta, tb, item.a, item.b, [&](std::uint32_t ia, std::uint32_t ib) {
+      const double lower = detail::node_pair_lower_bound(q, frames, ia, ib);
       if (lower > limit) return;
       heap.push_back({lower, ia, ib});
       std::push_heap(heap.begin(), heap.end());
-    };
-    if (nb.is_leaf() || (!na.is_leaf() && na.radius >= nb.radius)) {
-      push(na.first, item.b);
-      push(na.second, item.b);
-    } else {
-      push(item.a, nb.first);
-      push(item.a, nb.second);
-    }
+    });
   }
   return best;
 }
