@@ -147,12 +147,15 @@ void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalT
         for (std::uint32_t nb : around_b_) {
           if (na == ta && nb == tb) continue;
           // A neighbour the plane bound puts farther than the best so far
-          // cannot be the next step (nor intersect): skip its exact
-          // distance unless the cache already has it. The bound is taken
-          // against best_distance itself, a tolerance away from the
-          // acceptance test, so rounding cannot skip a closer pair.
+          // less half the tolerance cannot be the next step (nor
+          // intersect): a step needs a pair closer by the whole tolerance.
+          // Skip its exact distance unless the cache already has it. The
+          // half tolerance left is far above the plane bound's rounding, so
+          // rounding cannot skip a closer pair; and a flat field's ties (a
+          // neighbour exactly as far, as across parallel sheets) are skipped
+          // rather than computed.
           if (!original_ && best_distance > 0.0 && find(pair_key(na, nb)) == kMissing &&
-              plane_separated(na, nb, best_distance)) {
+              plane_separated(na, nb, best_distance - 0.5 * tolerance)) {
             ++stats.plane_skips;
             continue;
           }
