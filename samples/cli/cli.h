@@ -165,11 +165,9 @@ class Scene {
   proxBodyId b() const { return b_; }
 
   std::vector<proxContact> contacts() const {
-    int32_t count = 0;
-    const proxResult r = proxBody_GetContacts(b_, nullptr, 0, &count);
-    if (r != PROX_ERROR_CAPACITY) check(r);
-    std::vector<proxContact> out(static_cast<std::size_t>(count));
-    if (count > 0) check(proxBody_GetContacts(b_, out.data(), count, &count));
+    std::vector<proxContact> out;
+    std::vector<proxContactPatch> unused;
+    contacts(out, unused);
     return out;
   }
   // The contacts and each one's patch (docs/patches.md), from one snapshot.

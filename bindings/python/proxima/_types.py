@@ -32,6 +32,10 @@ ScriptedDeviceRecord = make_dataclass("proxScriptedDeviceRecord", "ScriptedDevic
                                       "What a scripted device was handed (proxScriptedDeviceRecord).")
 
 
+#: proxContactPatch's fields as contact_dtype names them: (public, C name).
+PATCH_FIELDS = [("patch_" + snake(n), n) for n in c_dtype("proxContactPatch").names if n != "reserved"]
+
+
 def _public_contact_dtype():
     """proxContact in snake_case: vectors as (3,) float64; then its patch's
     fields as patch_count, patch_extent, patch_spread, patch_angle; the other
@@ -47,7 +51,7 @@ def _public_contact_dtype():
             fields.append((snake(name), raw.fields[name][0]))
     # The contact's patch (proxContactPatch, docs/patches.md) beside it.
     patch = c_dtype("proxContactPatch")
-    fields += [("patch_" + snake(n), patch.fields[n][0]) for n in patch.names if n != "reserved"]
+    fields += [(public, patch.fields[c][0]) for public, c in PATCH_FIELDS]
     return np.dtype(fields + objects)
 
 

@@ -13,8 +13,8 @@ import numpy as np
 from . import _header
 from ._core import (CAPACITY, c_dtype, check, enum_value, ffi, fill_c, from_c, integer, invalid, lib,
                     pose_from_c, pose_to_c, poses_array, real, snake, vec3)
-from ._types import (ForceSettings, IntersectionStats, MeshInfo, MeshStats, PatchSettings, PatchStats,
-                     SafetyStats, SearchStats, ThreadStats, TrackStats, WorldStats, contact_dtype)
+from ._types import (PATCH_FIELDS, ForceSettings, IntersectionStats, MeshInfo, MeshStats, PatchSettings,
+                     PatchStats, SafetyStats, SearchStats, ThreadStats, TrackStats, WorldStats, contact_dtype)
 
 _UINT32_MAX = 0xFFFFFFFF
 _live_worlds = weakref.WeakSet()
@@ -484,7 +484,6 @@ def _flat_dtype(name):
 _CONTACT_FLAT = _flat_dtype("proxContact")
 _CONTACT_FIELDS = [(snake(n), n) for n in _CONTACT_FLAT.names if n != "other"]
 _PATCH_DTYPE = c_dtype("proxContactPatch")
-_PATCH_FIELDS = [("patch_" + snake(n), n) for n in _PATCH_DTYPE.names if n != "reserved"]
 _LINE_DTYPE = c_dtype("proxPolylineInfo")
 
 
@@ -547,7 +546,7 @@ class Body:
         for public, c in _CONTACT_FIELDS:
             out[public] = flat[c]
         patches = np.frombuffer(ffi.buffer(self._patches, n * _PATCH_DTYPE.itemsize), dtype=_PATCH_DTYPE)
-        for public, c in _PATCH_FIELDS:
+        for public, c in PATCH_FIELDS:
             out[public] = patches[c]
         keys = flat["other"]
         if (keys == keys[0]).all():

@@ -263,7 +263,6 @@ struct RankedNodePair {
 // a cut node pair. Best is the smaller lower bound; where lower bounds tie
 // (flat, parallel boxes all bound at the gap) the pair whose spheres' centres
 // are closer, by adding a thousandth of that distance. `heap` is scratch.
-
 template <typename Leaf>
 bool first_leaf_pair(const PairQuery& q, const Frames& frames, std::uint32_t ia, std::uint32_t ib,
                      int max_leaves, std::vector<RankedNodePair>& heap, Leaf leaf) {

@@ -46,8 +46,8 @@ struct GlobalSearchStats {
 // pair within the cutoff that passes (the candidates, before reduction).
 // Once query.patches.leaf_budget leaf pairs have been tested, each node pair
 // that passes and whose two bounding spheres are both within half the patch
-// radius (half the cutoff with patches off) is cut: one leaf pair below it,
-// reached by always taking the closer child pair, stands for it
+// radius (half the cutoff with patches off) is cut: the first candidate of
+// at most 8 of its leaf pairs, taken closest first, stands for it
 // (docs/patches.md, "The bounded search").
 void global_search_precise(const PairQuery& query, std::vector<LmdPair>& out, GlobalSearchStats& stats);
 

@@ -37,23 +37,7 @@ namespace Proxima
 
         /// <summary>The tool's contacts after the last step (while the threads run: local
         /// tracking's latest), in a new array.</summary>
-        public Contact[] GetContacts()
-        {
-            for (;;)
-            {
-                Result r = Native.GetContacts(id, null, out int count);
-                if (r != Result.Success && r != Result.Capacity) throw ProximaException.FromLastError(r);
-                var contacts = new Contact[count];
-                if (count == 0) return contacts;
-                r = Native.GetContacts(id, contacts, out int filled);
-                // Only the threads can change the count between the two calls.
-                if (r == Result.Capacity) continue;
-                Native.Check(r);
-                if (filled == count) return contacts;
-                Array.Resize(ref contacts, filled);
-                return contacts;
-            }
-        }
+        public Contact[] GetContacts() => GetContacts(out ContactPatch[] _);
 
         /// <summary>Fills the caller's array without allocating and returns how many
         /// contacts there are. When that is more than buffer.Length, the buffer holds
