@@ -70,15 +70,16 @@ std::string extension_of(const std::string& name) {
 }
 
 // A mesh from the file `name`, or, when `bytes` is given, from that file's
-// bytes already in memory (then a GLB is also known by its magic, and a
-// .gltf's buffers must be embedded: nothing is read from disk).
+// `size` bytes already in memory (then a GLB is also known by its magic, and
+// a .gltf's buffers must be embedded: nothing is read from disk). The bytes
+// are copied once, into what the reader parses.
 proxMeshId load_mesh(proxWorldId world, runtime::World& w, const std::string& name,
-                     std::vector<unsigned char>* bytes) {
+                     const unsigned char* bytes = nullptr, std::size_t size = 0) {
   std::string ext = extension_of(name);
-  if (bytes && bytes->size() >= 4 && std::memcmp(bytes->data(), "glTF", 4) == 0) ext = "glb";
+  if (bytes && size >= 4 && std::memcmp(bytes, "glTF", 4) == 0) ext = "glb";
   if (ext == "obj") {
     io::ObjData obj;
-    check(bytes ? io::parse_obj(std::string(bytes->begin(), bytes->end()), name, obj)
+    check(bytes ? io::parse_obj(std::string(reinterpret_cast<const char*>(bytes), size), name, obj)
                 : io::read_obj(name, obj));
     return add_mesh(world, w,
                     {obj.positions.data(), static_cast<uint32_t>(obj.positions.size() / 3),
@@ -91,7 +92,7 @@ proxMeshId load_mesh(proxWorldId world, runtime::World& w, const std::string& na
     std::vector<std::string> warnings;
     io::GltfLoadOptions options;
     options.external_buffers = bytes == nullptr;
-    check(bytes ? io::load_gltf_bytes(std::move(*bytes), name, options, parts, &warnings)
+    check(bytes ? io::load_gltf_bytes({bytes, bytes + size}, name, options, parts, &warnings)
                 : io::load_gltf(name, options, parts, &warnings));
     if (parts.empty()) fail(PROX_ERROR_INVALID_MESH, name + ": the scene has no triangles");
     const io::GltfMesh& m = parts.front();
@@ -136,7 +137,7 @@ proxResult proxWorld_LoadMesh(proxWorldId world, const char* path, proxMeshId* m
     runtime::World& w = world_of(world);
     need_stopped(w);
     need(path, "path");
-    *mesh = load_mesh(world, w, path, nullptr);
+    *mesh = load_mesh(world, w, path);
   });
 }
 
@@ -153,9 +154,8 @@ proxResult proxWorld_LoadMeshFromMemory(proxWorldId world, const void* data, uin
     if (size > kMaxMemoryMesh)
       fail(PROX_ERROR_INVALID_ARGUMENT, std::string(name) + ": " + std::to_string(size) +
                                             " bytes, more than the 4 GiB a mesh file may have");
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    std::vector<unsigned char> copy(bytes, bytes + size);
-    *mesh = load_mesh(world, w, name, &copy);
+    *mesh =
+        load_mesh(world, w, name, static_cast<const unsigned char*>(data), static_cast<std::size_t>(size));
   });
 }
 
