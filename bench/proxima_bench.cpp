@@ -1,5 +1,5 @@
 // proxima_bench: run time against error on named scenes, every method side by
-// side on the same poses in one run (issue 5, docs/benchmarks.md).
+// side on the same poses in one run (docs/benchmarks.md).
 //
 //   proxima_bench [--scene NAME|GROUP|all] [--poses N] [--out DIR] [--reference-every K]
 //                 [--local-reps R] [--force-reps R] [--meshes DIR] [--scaling-poses N]

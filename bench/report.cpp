@@ -354,7 +354,8 @@ std::string summary_json(const SceneRun& run, const Options& opt) {
   }
   j.end_object();
 
-  // The targets of issue 5 this scene can measure.
+  // The performance targets this scene can measure (docs/benchmarks.md,
+  // "Where we stand against the performance targets").
   const Accuracy pa = accuracy(run, "precise");
   j.key("targets").begin_object();
   if (!rows_of(run, "fcl", false).empty()) {

@@ -37,12 +37,12 @@ std::vector<Scene> make_scenes() {
     all.push_back(s);
   };
   bunny_scene("path-t",
-              "Path T (issue 5): bunny B translated along +x from 50 mm to 0.5 mm from bunny A, linear in x; "
+              "Path T: bunny B translated along +x from 50 mm to 0.5 mm from bunny A, linear in x; "
               "hard force settings, cutoff 5 mm. The paper's hard scene (6.1) is this path.",
               PathKind::Translate, 0.0005, false, "paper-hard");
   bunny_scene(
       "path-r",
-      "Path R (issue 5): bunny B turned by 90 deg * s about normalize(0.3, 1, 0.2) through its centroid "
+      "Path R: bunny B turned by 90 deg * s about normalize(0.3, 1, 0.2) through its centroid "
       "and moved along +x so that the minimum distance is 50 mm * 0.01^s (bisection on x); hard force "
       "settings, cutoff 5 mm.",
       PathKind::Rotate, 0.0005, false, "");

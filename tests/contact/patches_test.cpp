@@ -236,9 +236,10 @@ TEST(Patches, TwoParallelSheetsAMillimetreApart) {
 TEST(Patches, SuzanneAgainstItselfMovedOneCentimetre) {
   const auto m = load_gltf_model("gltf/Suzanne/Suzanne.gltf");
   ASSERT_TRUE(m);
-  // The case: 13,572 LMDs unmerged. The patches' bound in area
-  // terms (the surface's 11 m^2 over pi r^2 / 4 at r = 2 cm) is far above
-  // it; what is asserted is what the default rule gives, with margin.
+  // The case of docs/patches.md's introduction: 13,572 LMDs unmerged. The
+  // patches' bound in area terms (the surface's 11 m^2 over pi r^2 / 4 at
+  // r = 2 cm) is far above it; what is asserted is what the default rule
+  // gives, with margin.
   check_flat_field("Suzanne +1 cm", *m, *m, Pose{glm::dmat3(1.0), Vec3(0.0, 0.0, 0.01)}, 0.02, 9000);
 }
 
