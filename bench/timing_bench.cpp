@@ -1,7 +1,7 @@
 // proxima_timing_bench: how well the haptic loop keeps its 1 kHz beat, for
 // each way of waiting (sleep, spin), with and without a real-time priority,
 // with the global search idle and busy, side by side in one run
-// (docs/benchmarks.md, "Keeping the beat"; docs/threading.md).
+// (docs/benchmarks-runtime.md, "Keeping the beat"; docs/threading.md).
 //
 //   proxima_timing_bench [--seconds S] [--out DIR] [--mesh FILE]
 //

@@ -53,7 +53,7 @@ build/release/bench/proxima_bench --scene all --meshes build/bench-meshes --out 
   tee build/bench-results.txt
 build/bench-venv/bin/python bench/plot.py build/bench-results docs/benchmarks
 # The haptic loop's timing, each way of waiting with and without real-time
-# priority, search idle and busy (docs/benchmarks.md, "Keeping the beat").
+# priority, search idle and busy (docs/benchmarks-runtime.md, "Keeping the beat").
 echo "== proxima_timing_bench --out build/bench-results"
 build/release/bench/proxima_timing_bench --out build/bench-results | tee build/bench-timing.txt
 build/bench-venv/bin/python bench/plot_timing.py build/bench-results docs/benchmarks

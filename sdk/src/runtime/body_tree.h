@@ -3,7 +3,7 @@
 // tool's box grown by the cutoff. Static and movable bodies only change
 // when the game moves them, so the tree is rebuilt then and not per step: a
 // step costs O(log n + k) for n bodies of which k are in range
-// (docs/benchmarks.md, the many-bodies scene).
+// (docs/benchmarks-runtime.md, the many-bodies scene).
 #pragma once
 
 #include "mesh/mesh.h"
