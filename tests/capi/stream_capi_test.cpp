@@ -297,6 +297,31 @@ TEST_F(Stream, ADeviceHoldsOnlyItsOwnWorldsTools) {
   EXPECT_OK(proxWorld_StopThreads(world));
 }
 
+// A def whose callbacks are one built-in device's and whose pointer is
+// another's, both of this world, is refused: the haptic loop would read the
+// one device as the other.
+TEST_F(Stream, ABuiltInDevicesCallbacksTakeOnlyThatKindOfDevice) {
+  create(PROX_STREAM_HOLD);
+  const proxPose poses[2] = {at(kFar), at(kNear)};
+  proxScriptedDeviceDef scd = proxDefaultScriptedDeviceDef();
+  scd.poses = poses;
+  scd.poseCount = 2;
+  proxScriptedDeviceId scripted{};
+  ASSERT_OK(proxWorld_CreateScriptedDevice(world, &scd, &scripted));
+  proxDeviceDef streamed{}, script{};
+  ASSERT_OK(proxStreamDevice_GetDeviceDef(device, &streamed));
+  ASSERT_OK(proxScriptedDevice_GetDeviceDef(scripted, &script));
+  proxDeviceDef mixed = streamed;
+  mixed.userData = script.userData;
+  EXPECT_FAILS(proxBody_SetDevice(tool, &mixed), PROX_ERROR_INVALID_ARGUMENT, "built-in device");
+  mixed = script;
+  mixed.userData = streamed.userData;
+  EXPECT_FAILS(proxBody_SetDevice(tool, &mixed), PROX_ERROR_INVALID_ARGUMENT, "built-in device");
+  // Each as it came holds the tool.
+  EXPECT_OK(proxBody_SetDevice(tool, &script));
+  EXPECT_OK(proxBody_SetDevice(tool, &streamed));
+}
+
 TEST_F(Stream, ThreadRulesAndTheWorldsEnd) {
   create(PROX_STREAM_HOLD);
   const proxPose good = at(kFar);

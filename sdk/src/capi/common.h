@@ -80,19 +80,13 @@ runtime::World& world_of(proxWorldId id, const char* what = "world");
 // on other threads to finish with them (stream_device.cpp). Before the world
 // is destroyed, with its threads stopped.
 void release_stream_devices(proxWorldId world);
-// Whether a device def is a streamed device's (its callbacks are Proxima's).
-bool is_stream_device_def(const proxDeviceDef& def);
-// A built-in device's def as Proxima made it (both callbacks its own): the
-// runtime's device it stands for, which a tool then holds directly, so the
-// haptic loop hands it the whole DeviceWrench (the closest distance too,
-// which proxWrench does not carry). False for any other def.
-bool stream_runtime_device(const proxDeviceDef& def, runtime::Device& out);
-bool hid_runtime_device(const proxDeviceDef& def, runtime::Device& out);
-// HID devices (hid_device.cpp, built with PROX_WITH_HIDAPI): whether a def
-// is one's, whether that device belongs to `world`, and closing a world's
-// devices before the world is destroyed, with its threads stopped.
-bool is_hid_device_def(const proxDeviceDef& def);
-bool hid_device_of_world(const void* device, proxWorldId world);
+// HID devices (hid_device.cpp, built with PROX_WITH_HIDAPI). A def that
+// reads through a HID device's callbacks (builtin_device.h) fails unless
+// that device is open and of `world`; one exactly as Proxima made it sets
+// `out` to the device, for the tool to hold directly. Any other def is left
+// alone. And closing a world's devices before the world is destroyed, with
+// its threads stopped.
+void hid_device_def(const proxDeviceDef& def, proxWorldId world, runtime::Device& out);
 void release_hid_devices(proxWorldId world);
 
 inline runtime::Handle mesh_of(proxMeshId id, runtime::World*& world) {

@@ -1,7 +1,9 @@
 // Devices: the application's callbacks, and the built-in scripted device.
+#include "capi/builtin_device.h"
 #include "capi/common.h"
 
 #include "io/poses.h"
+#include "runtime/stream_device.h"
 
 using namespace prox;
 using namespace prox::capi;
@@ -31,20 +33,6 @@ struct DeviceAdapter {
   proxDeviceDef def;
 };
 
-// The scripted device seen through the C device callbacks.
-struct ScriptedTrampoline {
-  static proxBool read(void* user, proxPose* pose) {
-    runtime::DevicePose p{};
-    if (!static_cast<runtime::ScriptedDevice*>(user)->read_pose(&p)) return 0;
-    *pose = {{p.position[0], p.position[1], p.position[2]},
-             {p.rotation[0], p.rotation[1], p.rotation[2], p.rotation[3]}};
-    return 1;
-  }
-  static void write(void* user, const proxWrench* w) {
-    static_cast<runtime::ScriptedDevice*>(user)->write_wrench(device_wrench_of(*w));
-  }
-};
-
 proxScriptedDeviceId add_scripted(proxWorldId world, runtime::World& w,
                                   std::vector<runtime::ScriptedPose> poses, double seconds_per_pose,
                                   bool loop) {
@@ -59,6 +47,20 @@ runtime::ScriptedDevice& scripted_of(proxScriptedDeviceId id) {
   runtime::ScriptedDevice* d = w.scripted_device(id.index1 - 1);
   if (!d) fail(PROX_ERROR_INVALID_HANDLE, "device does not name a scripted device of its world");
   return *d;
+}
+
+using ScriptedDef = BuiltinDevice<runtime::ScriptedDevice>;
+
+// A def that reads through a built-in device of type D must name one of the
+// tool's world (one of another world would be gone while this one still
+// calls it); one exactly as Proxima made it sets `out` to that device.
+template <typename D>
+void take_builtin(const proxDeviceDef& def, const runtime::World& w, runtime::Device& out) {
+  if (!BuiltinDevice<D>::claims(def)) return;
+  if (!w.owns_device(static_cast<const D*>(def.userData)))
+    fail(PROX_ERROR_INVALID_ARGUMENT,
+         "def is a built-in device of another world (a device can hold only its own world's tools)");
+  if (D* device = BuiltinDevice<D>::of(def)) out = device->device();
 }
 
 }  // namespace
@@ -82,35 +84,18 @@ proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def) {
     }
     need_def(*def, "proxDefaultDeviceDef");
     if (!def->readPose) fail(PROX_ERROR_INVALID_ARGUMENT, "def->readPose is NULL");
-    // A built-in device lives as long as its world: one from another world
-    // would be gone while this one still calls it.
-    if ((def->readPose == &ScriptedTrampoline::read || is_stream_device_def(*def)) &&
-        !w->owns_device(def->userData))
-      fail(PROX_ERROR_INVALID_ARGUMENT,
-           "def is a built-in device of another world (a device can hold only its own world's tools)");
-#if PROX_WITH_HIDAPI
-    if (is_hid_device_def(*def) && !hid_device_of_world(def->userData, tool.world))
-      fail(PROX_ERROR_INVALID_ARGUMENT,
-           "def is a HID device of another world, or a closed one (a device can hold only its own world's "
-           "tools)");
-#endif
     // Proxima's own devices, as they came, are held directly (and are
     // handed the closest distance); any other def through its callbacks.
     runtime::Device d;
-    if (def->readPose == &ScriptedTrampoline::read && def->writeWrench == &ScriptedTrampoline::write) {
-      w->set_device(h, static_cast<runtime::ScriptedDevice*>(def->userData)->device());
-      return;
-    }
-    if (stream_runtime_device(*def, d)) {
-      w->set_device(h, d);
-      return;
-    }
+    take_builtin<runtime::ScriptedDevice>(*def, *w, d);
+    take_builtin<runtime::StreamDevice>(*def, *w, d);
 #if PROX_WITH_HIDAPI
-    if (hid_runtime_device(*def, d)) {
+    hid_device_def(*def, tool.world, d);
+#endif
+    if (d.attached()) {
       w->set_device(h, d);
       return;
     }
-#endif
     auto adapter = std::make_shared<DeviceAdapter>(*def);
     d.read_pose = &DeviceAdapter::read;
     d.write_wrench = def->writeWrench ? &DeviceAdapter::write : nullptr;
@@ -170,11 +155,7 @@ proxResult proxWorld_LoadScriptedDevice(proxWorldId world, const char* path, dou
 proxResult proxScriptedDevice_GetDeviceDef(proxScriptedDeviceId device, proxDeviceDef* def) {
   return guard("proxScriptedDevice_GetDeviceDef", [&] {
     need(def, "def");
-    runtime::ScriptedDevice& d = scripted_of(device);
-    *def = proxDefaultDeviceDef();
-    def->readPose = &ScriptedTrampoline::read;
-    def->writeWrench = &ScriptedTrampoline::write;
-    def->userData = &d;
+    *def = ScriptedDef::def_of(scripted_of(device));
   });
 }
 

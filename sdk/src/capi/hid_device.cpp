@@ -2,6 +2,7 @@
 // its world: proxHidDevice_Close stops its thread and closes it but keeps
 // the object until the world is destroyed, so a haptic loop still holding
 // it reads "no pose" from live memory rather than from a freed one.
+#include "capi/builtin_device.h"
 #include "capi/common.h"
 
 #include <proxima/proxima_hid.h>
@@ -22,8 +23,6 @@ struct HidEntry {
 std::mutex g_hid_mutex;  // game threads only
 std::vector<HidEntry> g_hid;
 
-std::uint64_t world_key(proxWorldId w) { return (std::uint64_t(w.index1) << 32) | w.generation; }
-
 // Under g_hid_mutex.
 devices::HidDevice& hid_of(proxHidDeviceId id) {
   world_of(id.world, "device's world");
@@ -34,18 +33,7 @@ devices::HidDevice& hid_of(proxHidDeviceId id) {
   return *g_hid[id.index1 - 1].device;
 }
 
-struct HidTrampoline {
-  static proxBool read(void* user, proxPose* pose) {
-    runtime::DevicePose p{};
-    if (!static_cast<devices::HidDevice*>(user)->read_pose(&p)) return 0;
-    *pose = {{p.position[0], p.position[1], p.position[2]},
-             {p.rotation[0], p.rotation[1], p.rotation[2], p.rotation[3]}};
-    return 1;
-  }
-  static void write(void* user, const proxWrench* w) {
-    static_cast<devices::HidDevice*>(user)->write_wrench(device_wrench_of(*w));
-  }
-};
+using HidDef = BuiltinDevice<devices::HidDevice>;
 
 void copy(char* out, std::size_t capacity, const std::string& s) {
   const std::size_t n = std::min(s.size(), capacity - 1);
@@ -64,19 +52,19 @@ void need_range(double v, double lo, double hi, const char* name) {
 
 namespace prox::capi {
 
-bool is_hid_device_def(const proxDeviceDef& def) { return def.readPose == &HidTrampoline::read; }
-
-bool hid_runtime_device(const proxDeviceDef& def, runtime::Device& out) {
-  if (def.readPose != &HidTrampoline::read || def.writeWrench != &HidTrampoline::write) return false;
-  out = static_cast<devices::HidDevice*>(def.userData)->device();
-  return true;
-}
-
-bool hid_device_of_world(const void* device, proxWorldId world) {
-  std::lock_guard<std::mutex> lock(g_hid_mutex);
-  for (const HidEntry& e : g_hid)
-    if (e.device.get() == device) return e.open && e.world == world_key(world);
-  return false;
+void hid_device_def(const proxDeviceDef& def, proxWorldId world, runtime::Device& out) {
+  if (!HidDef::claims(def)) return;
+  bool ours = false;
+  {
+    std::lock_guard<std::mutex> lock(g_hid_mutex);
+    for (const HidEntry& e : g_hid)
+      if (e.device.get() == def.userData) ours = e.open && e.world == world_key(world);
+  }
+  if (!ours)
+    fail(PROX_ERROR_INVALID_ARGUMENT,
+         "def is a HID device of another world, or a closed one (a device can hold only its own world's "
+         "tools)");
+  if (devices::HidDevice* d = HidDef::of(def)) out = d->device();
 }
 
 void release_hid_devices(proxWorldId world) {
@@ -193,11 +181,7 @@ proxResult proxHidDevice_GetDeviceDef(proxHidDeviceId device, proxDeviceDef* def
   return guard("proxHidDevice_GetDeviceDef", [&] {
     need(def, "def");
     std::lock_guard<std::mutex> lock(g_hid_mutex);
-    devices::HidDevice& d = hid_of(device);
-    *def = proxDefaultDeviceDef();
-    def->readPose = &HidTrampoline::read;
-    def->writeWrench = &HidTrampoline::write;
-    def->userData = &d;
+    *def = HidDef::def_of(hid_of(device));
   });
 }
 

@@ -5,6 +5,7 @@
 // count before it checks the slot's owner; a world being destroyed clears
 // the owner first and then waits for the users to leave, so no call ever
 // touches a device that is gone.
+#include "capi/builtin_device.h"
 #include "capi/common.h"
 
 #include "runtime/stream_device.h"
@@ -27,8 +28,6 @@ struct StreamSlot {
 
 StreamSlot g_slots[kMaxStreamDevices];
 std::mutex g_slots_mutex;  // creation and release, on game threads only
-
-std::uint64_t world_key(proxWorldId w) { return (std::uint64_t(w.index1) << 32) | w.generation; }
 
 // A device in use for the length of one call.
 class DeviceUse {
@@ -59,20 +58,6 @@ class DeviceUse {
   runtime::StreamDevice* device_ = nullptr;
 };
 
-// The device callbacks the haptic loop calls (through proxDeviceDef).
-struct StreamTrampoline {
-  static proxBool read(void* user, proxPose* pose) {
-    runtime::DevicePose p{};
-    if (!static_cast<runtime::StreamDevice*>(user)->read_pose(&p)) return 0;
-    *pose = {{p.position[0], p.position[1], p.position[2]},
-             {p.rotation[0], p.rotation[1], p.rotation[2], p.rotation[3]}};
-    return 1;
-  }
-  static void write(void* user, const proxWrench* w) {
-    static_cast<runtime::StreamDevice*>(user)->write_wrench(device_wrench_of(*w));
-  }
-};
-
 bool finite3(double a, double b, double c) {
   return std::isfinite(a) && std::isfinite(b) && std::isfinite(c);
 }
@@ -97,14 +82,6 @@ void check_sample(const proxPose& pose, double time, runtime::StreamSample& out)
 }  // namespace
 
 namespace prox::capi {
-
-bool is_stream_device_def(const proxDeviceDef& def) { return def.readPose == &StreamTrampoline::read; }
-
-bool stream_runtime_device(const proxDeviceDef& def, runtime::Device& out) {
-  if (def.readPose != &StreamTrampoline::read || def.writeWrench != &StreamTrampoline::write) return false;
-  out = static_cast<runtime::StreamDevice*>(def.userData)->device();
-  return true;
-}
 
 void release_stream_devices(proxWorldId world) {
   const std::uint64_t key = world_key(world);
@@ -223,10 +200,7 @@ proxResult proxStreamDevice_GetDeviceDef(proxStreamDeviceId device, proxDeviceDe
     need(def, "def");
     world_of(device.world, "device's world");
     const DeviceUse use(device);
-    *def = proxDefaultDeviceDef();
-    def->readPose = &StreamTrampoline::read;
-    def->writeWrench = &StreamTrampoline::write;
-    def->userData = &use.device();
+    *def = BuiltinDevice<runtime::StreamDevice>::def_of(use.device());
   });
 }
 

@@ -133,9 +133,13 @@ std::uint32_t World::add_scripted_device(std::unique_ptr<ScriptedDevice> device)
   return static_cast<std::uint32_t>(scripted_devices_.size() - 1);
 }
 
-bool World::owns_device(const void* device) const {
+bool World::owns_device(const ScriptedDevice* device) const {
   for (const auto& d : scripted_devices_)
     if (d.get() == device) return true;
+  return false;
+}
+
+bool World::owns_device(const StreamDevice* device) const {
   for (const auto& d : stream_devices_)
     if (d.get() == device) return true;
   return false;

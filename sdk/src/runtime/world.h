@@ -204,8 +204,9 @@ class World {
     return index < stream_devices_.size() ? stream_devices_[index].get() : nullptr;
   }
   std::uint32_t stream_device_count() const { return static_cast<std::uint32_t>(stream_devices_.size()); }
-  // Whether `device` is one of this world's scripted or streamed devices.
-  bool owns_device(const void* device) const;
+  // Whether `device` is one of this world's scripted (streamed) devices.
+  bool owns_device(const ScriptedDevice* device) const;
+  bool owns_device(const StreamDevice* device) const;
 
   // The threads (docs/threading.md). start_threads fails (false, with
   // `status`) on bad settings; while they run, meshes and bodies can be
