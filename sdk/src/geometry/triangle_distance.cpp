@@ -7,11 +7,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace prox::geometry {
 namespace {
 
 double length2(const Vec3& v) { return glm::dot(v, v); }
+
+constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
 double longest_edge(const Triangle& t) {
   return std::sqrt(std::max({length2(t.v[1] - t.v[0]), length2(t.v[2] - t.v[1]), length2(t.v[0] - t.v[2])}));
@@ -39,18 +42,16 @@ struct CandidateList {
   void add(const Vec3& pa, const Vec3& pb) { c[n++] = {pa, pb, length2(pb - pa)}; }
 };
 
-// Distance from a point to a set of points, the largest over the set.
-double max_distance_to_point(const Vec3* pts, int n, const Vec3& x) {
-  double worst = 0.0;
-  for (int i = 0; i < n; ++i) worst = std::max(worst, length2(pts[i] - x));
-  return std::sqrt(worst);
-}
-
-double max_distance_to_segment(const Vec3* pts, int n, const Vec3& a, const Vec3& b) {
-  double worst = 0.0;
-  for (int i = 0; i < n; ++i)
-    worst = std::max(worst, length2(pts[i] - closest_point_on_segment(pts[i], a, b)));
-  return std::sqrt(worst);
+// Whether every point of pts is within tol2 (squared) of segment [a, b].
+bool segment_holds(const Vec3* pts, int n, const Vec3& a, const Vec3& b, double tol2) {
+  const Vec3 d = b - a;
+  const double dd = length2(d);
+  const double inv = dd > 0.0 ? 1.0 / dd : 0.0;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 x = a + std::clamp(glm::dot(pts[i] - a, d) * inv, 0.0, 1.0) * d;
+    if (length2(pts[i] - x) > tol2) return false;
+  }
+  return true;
 }
 
 // The lowest-dimensional feature of t that holds every point of pts within
@@ -60,10 +61,11 @@ double max_distance_to_segment(const Vec3* pts, int n, const Vec3& a, const Vec3
 // collinear triangle it spans the others).
 Feature feature_holding(const Triangle& t, const Vec3* pts, int n, double tol) {
   int best_vertex = -1;
-  double best = tol;
+  double best2 = tol * tol;
   for (int k = 0; k < 3; ++k) {
-    const double d = max_distance_to_point(pts, n, t.v[k]);
-    if (d <= best) best_vertex = k, best = d;
+    double worst2 = 0.0;  // the farthest point from vertex k
+    for (int i = 0; i < n && worst2 <= best2; ++i) worst2 = std::max(worst2, length2(pts[i] - t.v[k]));
+    if (worst2 <= best2) best_vertex = k, best2 = worst2;
   }
   if (best_vertex >= 0) return {FeatureKind::Vertex, static_cast<std::uint8_t>(best_vertex)};
   int best_edge = -1;
@@ -71,8 +73,7 @@ Feature feature_holding(const Triangle& t, const Vec3* pts, int n, double tol) {
   for (int k = 0; k < 3; ++k) {
     const Vec3 &a = t.v[k], &b = t.v[(k + 1) % 3];
     const double len2 = length2(b - a);
-    if (len2 > best_length2 && max_distance_to_segment(pts, n, a, b) <= tol)
-      best_edge = k, best_length2 = len2;
+    if (len2 > best_length2 && segment_holds(pts, n, a, b, tol * tol)) best_edge = k, best_length2 = len2;
   }
   if (best_edge >= 0) return {FeatureKind::Edge, static_cast<std::uint8_t>(best_edge)};
   return {FeatureKind::Face, 0};
@@ -135,6 +136,241 @@ Vec3 closest_point_with_normal(const Vec3& p, const Triangle& t, const Vec3& n) 
   return best;
 }
 
+// The closest points of segments p0 + s d and q0 + t e, s, t in [0, 1],
+// when they lie inside both (the lines' critical point), or, for exactly
+// parallel segments that overlap, the middle of the overlap; false when the
+// closest points include an end of a segment.
+bool interior_params_segment_segment(const Vec3& p0, const Vec3& d, const Vec3& q0, const Vec3& e, Vec2& st) {
+  const Vec3 n = glm::cross(d, e);
+  const double nn = length2(n);
+  const Vec3 r = q0 - p0;
+  if (nn > 0.0) {
+    // Lines p0 + s d and q0 + t e: s = ((q0 - p0) x e) . n / |n|^2 and
+    // t = ((q0 - p0) x d) . n / |n|^2. The cross product keeps more accuracy
+    // than the normal equations' |d|^2 |e|^2 - (d.e)^2 for near-parallel lines.
+    const double s = glm::dot(glm::cross(r, e), n) / nn;
+    const double t = glm::dot(glm::cross(r, d), n) / nn;
+    st = Vec2(s, t);
+    return s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0;
+  }
+  const double dd = length2(d), ee = length2(e);
+  if (!(dd > 0.0 && ee > 0.0)) return false;
+  const double u0 = glm::dot(r, d) / dd, u1 = glm::dot(r + e, d) / dd;
+  const double lo = std::max(0.0, std::min(u0, u1)), hi = std::min(1.0, std::max(u0, u1));
+  if (!(lo <= hi)) return false;
+  const double s = 0.5 * (lo + hi);
+  st = Vec2(s, std::clamp(glm::dot(p0 + s * d - q0, e) / ee, 0.0, 1.0));
+  return true;
+}
+
+// Every candidate: each vertex against the other face, and each edge pair's
+// closest points. A degenerate triangle's "face" is its edges, which the
+// edge-edge candidates cover.
+void add_every_candidate(const Triangle& a, const Triangle& b, bool a_flat, bool b_flat,
+                         CandidateList& cand) {
+  const Vec3 normal_a = a_flat ? Vec3(0.0) : robust_normal(a);
+  const Vec3 normal_b = b_flat ? Vec3(0.0) : robust_normal(b);
+  for (int i = 0; i < 3; ++i) {
+    if (!b_flat) cand.add(a.v[i], closest_point_with_normal(a.v[i], b, normal_b));
+    if (!a_flat) cand.add(closest_point_with_normal(b.v[i], a, normal_a), b.v[i]);
+  }
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 &p0 = a.v[i], &p1 = a.v[(i + 1) % 3];
+    for (int j = 0; j < 3; ++j) {
+      const Vec3 &q0 = b.v[j], &q1 = b.v[(j + 1) % 3];
+      const Vec2 st = closest_params_segment_segment(p0, p1, q0, q1);
+      cand.add(p0 + st.x * (p1 - p0), q0 + st.y * (q1 - q0));
+    }
+  }
+}
+
+// A non-degenerate triangle with what every query against it reuses: its
+// edges (edge k from vertex k to k + 1), their inverse squared lengths, the
+// robust normal (robust_normal's arithmetic on these edges) and, for each
+// edge, the in-plane normal n x e_k: a point is on the triangle's side of
+// edge k when its dot product with that, taken from vertex k, is >= 0,
+// whatever the winding.
+struct Prepared {
+  const Triangle* t;
+  Vec3 e[3];
+  double inv_ee[3];
+  Vec3 n;
+  double inv_nn = 0.0;
+  Vec3 m[3];
+
+  explicit Prepared(const Triangle& tri) : t(&tri) {
+    double ee[3];
+    int longest = 0;
+    for (int k = 0; k < 3; ++k) {
+      e[k] = tri.v[(k + 1) % 3] - tri.v[k];
+      ee[k] = length2(e[k]);
+      inv_ee[k] = ee[k] > 0.0 ? 1.0 / ee[k] : 0.0;
+      if (ee[k] > ee[longest]) longest = k;
+    }
+    n = glm::cross(e[longest], e[(longest + 1) % 3]);
+    if (ee[longest] > 0.0) n -= (glm::dot(n, e[longest]) / ee[longest]) * e[longest];
+    const double nn = length2(n);
+    if (nn > 0.0 && std::isfinite(nn)) inv_nn = 1.0 / nn;
+    for (int k = 0; k < 3; ++k) m[k] = glm::cross(n, e[k]);
+  }
+  // A plane to project on: not so thin, small or large that its normal
+  // rounds to zero or overflows.
+  bool usable() const { return inv_nn > 0.0 && std::isfinite(inv_nn); }
+
+  // closest_point_with_normal, from the prepared parts.
+  Vec3 closest_point(const Vec3& p) const {
+    const Vec3 q = p - (glm::dot(p - t->v[0], n) * inv_nn) * n;
+    bool outside[3];
+    for (int k = 0; k < 3; ++k) outside[k] = glm::dot(m[k], q - t->v[k]) < 0.0;
+    if (!outside[0] && !outside[1] && !outside[2]) return q;
+    // Outside: the closest point is on an edge whose line q is beyond.
+    Vec3 best(0.0);
+    double best_d2 = INFINITY;
+    for (int k = 0; k < 3; ++k) {
+      if (!outside[k]) continue;
+      const Vec3 x = t->v[k] + std::clamp(glm::dot(p - t->v[k], e[k]) * inv_ee[k], 0.0, 1.0) * e[k];
+      const double d2 = length2(p - x);
+      if (d2 < best_d2) best = x, best_d2 = d2;
+    }
+    return best;
+  }
+};
+
+// Lower bounds from the two normals: along each triangle's unit normal u,
+// the other's vertices and edges are at least the gap between their
+// projections and the interval the triangle's own vertices project to
+// (any direction gives such a bound; the normals give tight ones). Holding
+// for any u, the bounds need u only to be a unit vector, not the exact
+// normal, so slivers are no exception; `error` covers the rounding of the
+// projections and of the local coordinates.
+struct Bounds {
+  double vertex[2][3];  // vertex i of triangle k from the other triangle
+  double edge[2][3];    // edge i of triangle k from the other triangle
+  double error = 0.0;
+  bool separated = false;  // by more than `error` along a normal: the triangles do not meet
+
+  Bounds(const Prepared& pa, const Prepared& pb) {
+    const Prepared* p[2] = {&pa, &pb};
+    double span2 = 0.0;
+    for (const Prepared* t : p)
+      for (const Vec3& v : t->t->v) span2 = std::max(span2, length2(v));
+    error = 16.0 * kEpsilon * std::sqrt(span2);
+    for (int k = 0; k < 2; ++k) {
+      const Prepared& self = *p[k];
+      const Prepared& other = *p[1 - k];
+      const Vec3 u = other.n * std::sqrt(other.inv_nn);
+      double proj[3], lo = INFINITY, hi = -INFINITY;
+      for (int i = 0; i < 3; ++i) {
+        const double x = glm::dot(other.t->v[i], u);
+        lo = std::min(lo, x), hi = std::max(hi, x);
+        proj[i] = glm::dot(self.t->v[i], u);
+      }
+      auto gap = [&](double from, double to) { return std::max({from - hi, lo - to, 0.0}); };
+      for (int i = 0; i < 3; ++i) {
+        const double x0 = proj[i], x1 = proj[(i + 1) % 3];
+        vertex[k][i] = gap(x0, x0);
+        edge[k][i] = gap(std::min(x0, x1), std::max(x0, x1));
+      }
+      const double self_lo = std::min({proj[0], proj[1], proj[2]});
+      const double self_hi = std::max({proj[0], proj[1], proj[2]});
+      separated = separated || gap(self_lo, self_hi) > error;
+    }
+  }
+};
+
+// Two non-degenerate triangles: the same closest set from fewer candidates.
+// - An edge pair whose closest points include an end of an edge adds
+//   nothing: that end against the other triangle (a vertex-face candidate)
+//   is at least as close, and is the same pair when it ties. So an edge pair
+//   adds a candidate only when its closest points lie inside both edges
+//   (or, for parallel edges, at the middle of their overlap).
+// - A candidate whose lower bound (Bounds) is beyond the tie tolerance of
+//   the best one found so far cannot tie with the minimum, so it is not
+//   computed: it would not have tied in the full enumeration either.
+void add_near_candidates(const Prepared& pa, const Prepared& pb, const Bounds& bounds, double tie_slack,
+                         CandidateList& cand) {
+  double best2 = INFINITY;
+  auto may_tie = [&](double bound) { return bound - bounds.error <= std::sqrt(best2) + tie_slack; };
+  auto vertex_face = [&](int o) {
+    const int k = o / 3, i = o % 3;
+    if (k == 0) {
+      const Vec3& v = pa.t->v[i];
+      cand.add(v, pb.closest_point(v));
+    } else {
+      const Vec3& v = pb.t->v[i];
+      cand.add(pa.closest_point(v), v);
+    }
+    best2 = std::min(best2, cand.c[cand.n - 1].d2);
+  };
+  // Vertices against faces: the nearest by its bound first (a small best
+  // early prunes the rest), then the others that may still tie.
+  int first = 0;
+  for (int o = 1; o < 6; ++o)
+    if (bounds.vertex[o / 3][o % 3] < bounds.vertex[first / 3][first % 3]) first = o;
+  vertex_face(first);
+  for (int o = 0; o < 6; ++o)
+    if (o != first && may_tie(bounds.vertex[o / 3][o % 3])) vertex_face(o);
+  // Edges against edges.
+  const Triangle &a = *pa.t, &b = *pb.t;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      if (!may_tie(std::max(bounds.edge[0][i], bounds.edge[1][j]))) continue;
+      Vec2 st;
+      if (interior_params_segment_segment(a.v[i], pa.e[i], b.v[j], pb.e[j], st)) {
+        cand.add(a.v[i] + st.x * pa.e[i], b.v[j] + st.y * pb.e[j]);
+        best2 = std::min(best2, cand.c[cand.n - 1].d2);
+      }
+    }
+}
+
+// The result of intersecting triangles: the middle of their intersection
+// set and the features holding it.
+TriangleDistance intersection_result(const TriangleIntersection& hit, const Triangle& a, const Triangle& b,
+                                     double size_a, double size_b) {
+  TriangleDistance r;
+  Vec3 middle(0.0);
+  for (int i = 0; i < hit.count; ++i) middle += hit.points[i];
+  middle /= static_cast<double>(hit.count);
+  r.intersects = true;
+  r.distance = 0.0;
+  r.point_a = r.point_b = middle;
+  r.feature_a = feature_holding(a, hit.points, hit.count, kFeatureTolerance * size_a);
+  r.feature_b = feature_holding(b, hit.points, hit.count, kFeatureTolerance * size_b);
+  return r;
+}
+
+// The result from the candidates of separate triangles (in local
+// coordinates, `origin` added back).
+TriangleDistance closest_result(const CandidateList& cand, const Triangle& a, const Triangle& b,
+                                const Vec3& origin, double size_a, double size_b, double tie_slack) {
+  double min_d2 = INFINITY;
+  for (int i = 0; i < cand.n; ++i) min_d2 = std::min(min_d2, cand.c[i].d2);
+  const double min_d = std::sqrt(min_d2);
+
+  // Every candidate within the tie tolerance of the minimum is a closest pair
+  // (up to rounding); together they span the closest set.
+  const double tie = min_d + tie_slack;
+  const double tie2 = std::max(tie * tie, min_d2);  // sqrt(x)^2 may round below x
+  Vec3 on_a[15], on_b[15];
+  int ties = 0;
+  Vec3 sum_a(0.0), sum_b(0.0);
+  for (int i = 0; i < cand.n; ++i) {
+    if (cand.c[i].d2 > tie2) continue;
+    on_a[ties] = cand.c[i].pa;
+    on_b[ties] = cand.c[i].pb;
+    sum_a += cand.c[i].pa;
+    sum_b += cand.c[i].pb;
+    ++ties;
+  }
+  TriangleDistance r;
+  r.distance = min_d;
+  r.point_a = sum_a / static_cast<double>(ties) + origin;
+  r.point_b = sum_b / static_cast<double>(ties) + origin;
+  r.feature_a = feature_holding(a, on_a, ties, kFeatureTolerance * size_a);
+  r.feature_b = feature_holding(b, on_b, ties, kFeatureTolerance * size_b);
+  return r;
+}
+
 }  // namespace
 
 Vec3 closest_point_on_triangle(const Vec3& p, const Triangle& t) {
@@ -145,10 +381,10 @@ Vec2 closest_params_segment_segment(const Vec3& p0, const Vec3& p1, const Vec3& 
   const Vec3 d = p1 - p0, e = q1 - q0;
   const double dd = length2(d), ee = length2(e);
   // Candidates: each endpoint against the other segment (the minimum on the
-  // boundary of the parameter square), then the interior critical point of
-  // non-parallel lines. Taking the best by the distance actually achieved
-  // keeps near-parallel segments accurate: an ill-conditioned interior
-  // solution can only lose to an endpoint candidate, never win wrongly.
+  // boundary of the parameter square), then the interior one. Taking the
+  // best by the distance actually achieved keeps near-parallel segments
+  // accurate: an ill-conditioned interior solution can only lose to an
+  // endpoint candidate, never win wrongly.
   auto param_on = [](const Vec3& x, const Vec3& a, const Vec3& dir, double len2) {
     return len2 == 0.0 ? 0.0 : std::clamp(glm::dot(x - a, dir) / len2, 0.0, 1.0);
   };
@@ -162,96 +398,43 @@ Vec2 closest_params_segment_segment(const Vec3& p0, const Vec3& p1, const Vec3& 
   consider(1.0, param_on(p1, q0, e, ee));
   consider(param_on(q0, p0, d, dd), 0.0);
   consider(param_on(q1, p0, d, dd), 1.0);
-  const Vec3 n = glm::cross(d, e);
-  const double nn = length2(n);
-  if (nn > 0.0) {
-    // Lines p0 + s d and q0 + t e: s = ((q0 - p0) x e) . n / |n|^2 and
-    // t = ((q0 - p0) x d) . n / |n|^2. The cross product keeps more accuracy
-    // than the normal equations' |d|^2 |e|^2 - (d.e)^2 for near-parallel lines.
-    const Vec3 r = q0 - p0;
-    const double s = glm::dot(glm::cross(r, e), n) / nn;
-    const double t = glm::dot(glm::cross(r, d), n) / nn;
-    if (s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0) consider(s, t);
-  } else if (dd > 0.0 && ee > 0.0) {
-    // Exactly parallel: prefer the middle of the overlap, a canonical choice.
-    const double u0 = glm::dot(q0 - p0, d) / dd, u1 = glm::dot(q1 - p0, d) / dd;
-    const double lo = std::max(0.0, std::min(u0, u1)), hi = std::min(1.0, std::max(u0, u1));
-    if (lo <= hi) {
-      const double s = 0.5 * (lo + hi);
-      const double t = param_on(p0 + s * d, q0, e, ee);
-      const double d2 = length2((p0 + s * d) - (q0 + t * e));
-      if (d2 <= best_d2) best_d2 = d2, best = Vec2(s, t);
-    }
+  // Then the interior critical point of non-parallel lines, or the middle of
+  // exactly parallel segments' overlap, which wins ties: a canonical choice.
+  Vec2 st;
+  if (interior_params_segment_segment(p0, d, q0, e, st)) {
+    const double d2 = length2((p0 + st.x * d) - (q0 + st.y * e));
+    if (d2 < best_d2 || (d2 == best_d2 && length2(glm::cross(d, e)) == 0.0)) best_d2 = d2, best = st;
   }
   return best;
 }
 
 TriangleDistance triangle_distance(const Triangle& a_world, const Triangle& b_world) {
-  TriangleDistance r;
   const double size_a = longest_edge(a_world), size_b = longest_edge(b_world);
-
-  const TriangleIntersection hit = intersect_triangles(a_world, b_world);
-  if (hit.intersects) {
-    Vec3 middle(0.0);
-    for (int i = 0; i < hit.count; ++i) middle += hit.points[i];
-    middle /= static_cast<double>(hit.count);
-    r.intersects = true;
-    r.distance = 0.0;
-    r.point_a = r.point_b = middle;
-    r.feature_a = feature_holding(a_world, hit.points, hit.count, kFeatureTolerance * size_a);
-    r.feature_b = feature_holding(b_world, hit.points, hit.count, kFeatureTolerance * size_b);
-    return r;
-  }
-
-  const Vec3 origin = local_origin(a_world, b_world);
-  const Triangle a = translated(a_world, origin), b = translated(b_world, origin);
+  const double tie_slack = kTieTolerance * std::max(size_a, size_b);
   const bool a_flat = collinear3d(a_world.v[0], a_world.v[1], a_world.v[2]);
   const bool b_flat = collinear3d(b_world.v[0], b_world.v[1], b_world.v[2]);
-
+  const Vec3 origin = local_origin(a_world, b_world);
+  const Triangle a = translated(a_world, origin), b = translated(b_world, origin);
   CandidateList cand;
-  // Vertex against face (each triangle's normal computed once). A degenerate
-  // triangle's "face" is its edges, which the edge-edge candidates cover.
-  const Vec3 normal_a = a_flat ? Vec3(0.0) : robust_normal(a);
-  const Vec3 normal_b = b_flat ? Vec3(0.0) : robust_normal(b);
-  for (int i = 0; i < 3; ++i) {
-    if (!b_flat) cand.add(a.v[i], closest_point_with_normal(a.v[i], b, normal_b));
-    if (!a_flat) cand.add(closest_point_with_normal(b.v[i], a, normal_a), b.v[i]);
-  }
-  // Edge against edge.
-  for (int i = 0; i < 3; ++i) {
-    const Vec3 &p0 = a.v[i], &p1 = a.v[(i + 1) % 3];
-    for (int j = 0; j < 3; ++j) {
-      const Vec3 &q0 = b.v[j], &q1 = b.v[(j + 1) % 3];
-      const Vec2 st = closest_params_segment_segment(p0, p1, q0, q1);
-      cand.add(p0 + st.x * (p1 - p0), q0 + st.y * (q1 - q0));
+
+  if (!a_flat && !b_flat) {
+    const Prepared pa(a), pb(b);
+    if (pa.usable() && pb.usable()) {
+      const Bounds bounds(pa, pb);
+      // Separated along a normal, they do not meet: the exact test would
+      // say so too.
+      if (!bounds.separated) {
+        const TriangleIntersection hit = intersect_triangles(a_world, b_world, a_flat, b_flat);
+        if (hit.intersects) return intersection_result(hit, a_world, b_world, size_a, size_b);
+      }
+      add_near_candidates(pa, pb, bounds, tie_slack, cand);
+      return closest_result(cand, a, b, origin, size_a, size_b, tie_slack);
     }
   }
-
-  double min_d2 = INFINITY;
-  for (int i = 0; i < cand.n; ++i) min_d2 = std::min(min_d2, cand.c[i].d2);
-  const double min_d = std::sqrt(min_d2);
-
-  // Every candidate within the tie tolerance of the minimum is a closest pair
-  // (up to rounding); together they span the closest set.
-  const double tie = min_d + kTieTolerance * std::max(size_a, size_b);
-  const double tie2 = std::max(tie * tie, min_d2);  // sqrt(x)^2 may round below x
-  Vec3 on_a[15], on_b[15];
-  int ties = 0;
-  Vec3 sum_a(0.0), sum_b(0.0);
-  for (int i = 0; i < cand.n; ++i) {
-    if (cand.c[i].d2 > tie2) continue;
-    on_a[ties] = cand.c[i].pa;
-    on_b[ties] = cand.c[i].pb;
-    sum_a += cand.c[i].pa;
-    sum_b += cand.c[i].pb;
-    ++ties;
-  }
-  r.distance = min_d;
-  r.point_a = sum_a / static_cast<double>(ties) + origin;
-  r.point_b = sum_b / static_cast<double>(ties) + origin;
-  r.feature_a = feature_holding(a, on_a, ties, kFeatureTolerance * size_a);
-  r.feature_b = feature_holding(b, on_b, ties, kFeatureTolerance * size_b);
-  return r;
+  const TriangleIntersection hit = intersect_triangles(a_world, b_world, a_flat, b_flat);
+  if (hit.intersects) return intersection_result(hit, a_world, b_world, size_a, size_b);
+  add_every_candidate(a, b, a_flat, b_flat, cand);
+  return closest_result(cand, a, b, origin, size_a, size_b, tie_slack);
 }
 
 }  // namespace prox::geometry

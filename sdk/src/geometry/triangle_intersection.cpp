@@ -326,8 +326,11 @@ bool triangles_intersect(const Triangle& a, const Triangle& b) {
 }
 
 TriangleIntersection intersect_triangles(const Triangle& a, const Triangle& b) {
+  return intersect_triangles(a, b, degenerate(a), degenerate(b));
+}
+
+TriangleIntersection intersect_triangles(const Triangle& a, const Triangle& b, bool a_deg, bool b_deg) {
   TriangleIntersection r;
-  const bool a_deg = degenerate(a), b_deg = degenerate(b);
   const PlaneSides sa = plane_sides(a, b, b_deg);
   if (strictly_one_side(sa)) return r;
   const PlaneSides sb = plane_sides(b, a, a_deg);

@@ -28,6 +28,9 @@ struct TriangleIntersection {
 // triangles_intersect); the points are constructed in floating point and are
 // accurate to a few ulps of the triangles' size.
 TriangleIntersection intersect_triangles(const Triangle& a, const Triangle& b);
+// The same, for a caller that has already asked collinear3d of each triangle.
+TriangleIntersection intersect_triangles(const Triangle& a, const Triangle& b, bool a_degenerate,
+                                         bool b_degenerate);
 
 // Where segment [p, q] crosses triangle t, for segments not lying in t's
 // plane: false when they do not meet (an exact verdict), else true and the
