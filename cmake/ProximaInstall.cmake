@@ -29,7 +29,7 @@ install(EXPORT proximaTargets NAMESPACE proxima:: DESTINATION ${PROX_INSTALL_CMA
 
 # The optional parts compiled into this libproxima.so, as package components:
 # find_package(proxima CONFIG REQUIRED COMPONENTS gltf) fails on a build
-# without glTF loading. Later parts (hidapi, OpenXR) append theirs here.
+# without glTF loading; likewise hid and openxr below.
 set(PROX_PACKAGE_COMPONENTS "")
 if(PROX_WITH_GLTF)
   list(APPEND PROX_PACKAGE_COMPONENTS gltf)
@@ -62,9 +62,9 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/proximaConfig.cmake ${CMAKE_CURRENT_BI
 
 # pkg-config. Relocatable (the prefix is found from the .pc's own place), so
 # `cmake --install --prefix DIR` and the .deb both get a correct file.
-# libproxima.so links no pkg-config package today (GLM and tinygltf are
-# compiled in); later parts add theirs (e.g. hidapi-hidraw) to
-# PROX_PC_REQUIRES_PRIVATE. Libs.private is for `pkg-config --static`.
+# GLM and tinygltf are compiled in; the optional parts that link a
+# pkg-config package (hidapi-hidraw) or need its headers (openxr) add it to
+# PROX_PC_REQUIRES_PRIVATE below. Libs.private is for `pkg-config --static`.
 file(RELATIVE_PATH prox_pc_to_prefix "/${CMAKE_INSTALL_LIBDIR}/pkgconfig" "/")
 string(REGEX REPLACE "/$" "" prox_pc_to_prefix "${prox_pc_to_prefix}")
 set(PROX_PC_REQUIRES_PRIVATE "" CACHE INTERNAL "pkg-config modules libproxima.so links")
