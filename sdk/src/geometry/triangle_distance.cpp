@@ -411,7 +411,10 @@ Vec2 closest_params_segment_segment(const Vec3& p0, const Vec3& p1, const Vec3& 
   return best;
 }
 
-TriangleDistance triangle_distance(const Triangle& a_world, const Triangle& b_world) {
+namespace {
+
+// `every`: the full enumeration even where the pruned one applies.
+TriangleDistance distance_of(const Triangle& a_world, const Triangle& b_world, bool every) {
   const double size_a = longest_edge(a_world), size_b = longest_edge(b_world);
   const double tie_slack = kTieTolerance * std::max(size_a, size_b);
   const bool a_flat = collinear3d(a_world.v[0], a_world.v[1], a_world.v[2]);
@@ -420,7 +423,7 @@ TriangleDistance triangle_distance(const Triangle& a_world, const Triangle& b_wo
   const Triangle a = translated(a_world, origin), b = translated(b_world, origin);
   CandidateList cand;
 
-  if (!a_flat && !b_flat) {
+  if (!every && !a_flat && !b_flat) {
     const Prepared pa(a), pb(b);
     if (pa.usable() && pb.usable()) {
       const Bounds bounds(pa, pb);
@@ -438,6 +441,14 @@ TriangleDistance triangle_distance(const Triangle& a_world, const Triangle& b_wo
   if (hit.intersects) return intersection_result(hit, a_world, b_world, size_a, size_b);
   add_every_candidate(a, b, a_flat, b_flat, cand);
   return closest_result(cand, a, b, origin, size_a, size_b, tie_slack);
+}
+
+}  // namespace
+
+TriangleDistance triangle_distance(const Triangle& a, const Triangle& b) { return distance_of(a, b, false); }
+
+TriangleDistance triangle_distance_every_candidate(const Triangle& a, const Triangle& b) {
+  return distance_of(a, b, true);
 }
 
 }  // namespace prox::geometry

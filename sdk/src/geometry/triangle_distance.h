@@ -27,6 +27,12 @@ struct TriangleDistance {
 // distance, the same verdict and the same features (re-indexed).
 TriangleDistance triangle_distance(const Triangle& a, const Triangle& b);
 
+// The same from all 15 candidates (each vertex against the other triangle,
+// each edge pair), where triangle_distance computes only those that can tie
+// with the minimum (docs/precision.md). Slower; the reference the pruning is
+// tested against: the same verdict and features, the distance to rounding.
+TriangleDistance triangle_distance_every_candidate(const Triangle& a, const Triangle& b);
+
 // Relative tolerances, as fractions of a triangle's longest edge, used to
 // name features and to treat near-equal candidate distances as ties.
 inline constexpr double kFeatureTolerance = 1e-9;
