@@ -81,7 +81,7 @@ bool vertex_is_open(const Mesh& mesh, std::uint32_t v) {
 
 }  // namespace
 
-Cone Snch::leaf_cone(const Mesh& mesh, std::uint32_t t) {
+Cone Snch::leaf_cone(const Mesh& mesh, std::uint32_t t, const std::vector<std::uint8_t>& open) {
   // A local minimum can sit on the face, an edge or a vertex of t. The
   // directions it can leave by are the face normal for the face, and lie in
   // the cone spanned by the adjacent face normals for an edge or a convex
@@ -92,7 +92,7 @@ Cone Snch::leaf_cone(const Mesh& mesh, std::uint32_t t) {
   const auto& idx = mesh.indices(t);
   Vec3 sum(0.0);
   for (std::uint32_t v : idx) {
-    if (vertex_is_open(mesh, v)) return Cone::everything();
+    if (open[v]) return Cone::everything();
     for (const std::uint32_t* n = mesh.vertex_triangles_begin(v); n != mesh.vertex_triangles_end(v); ++n)
       sum += mesh.face_normal(*n);
   }
@@ -128,6 +128,9 @@ Snch::Snch(const Mesh& mesh) {
   // Each node's range in `order`, for fitting inner spheres to their vertices.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> range(n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0);
   std::vector<Task> stack;
+  // Each vertex's openness, once: every triangle around it asks.
+  std::vector<std::uint8_t> open(mesh.vertex_count());
+  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) open[v] = vertex_is_open(mesh, v);
   if (n > 0) {
     nodes_.emplace_back();
     stack.push_back({0, 0, n, 0});
@@ -145,7 +148,7 @@ Snch::Snch(const Mesh& mesh) {
       const Sphere s = triangle_sphere(mesh.triangle(t));
       leaf.center = s.center;
       leaf.radius = s.radius;
-      leaf.cone = leaf_cone(mesh, t);
+      leaf.cone = leaf_cone(mesh, t, open);
       leaf.first = t;
       leaf.second = SnchNode::kLeaf;
       const Triangle tri = mesh.triangle(t);
@@ -207,7 +210,7 @@ Snch::Snch(const Mesh& mesh) {
   vertex_spread_.assign(mesh.vertex_count(), 0.5 * kPi);
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
     const Vec3& normal = mesh.vertex_normal(v);
-    if (vertex_is_open(mesh, v)) {
+    if (open[v]) {
       two_sided_ = true;
       continue;
     }

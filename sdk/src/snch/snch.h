@@ -70,8 +70,8 @@ class Snch {
 
   // The leaf cone of triangle t (also stored in its leaf): it bounds the
   // normals of every triangle sharing a vertex with t, or holds every
-  // direction where the surface is open or folded there.
-  static Cone leaf_cone(const Mesh& mesh, std::uint32_t t);
+  // direction where the surface is open or folded there (`open`, by vertex).
+  static Cone leaf_cone(const Mesh& mesh, std::uint32_t t, const std::vector<std::uint8_t>& open);
 
  private:
   std::vector<SnchNode> nodes_;
