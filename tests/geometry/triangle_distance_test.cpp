@@ -114,6 +114,24 @@ TEST(TriangleDistance, FarFromTheOriginKeepsPrecisionRelativeToSize) {
   EXPECT_EQ(r.feature_b, (Feature{E, 0}));
 }
 
+// Coordinates near 1e75-1e81: the in-plane edge tests of a vertex's
+// projection overflow to NaN, which must count as "outside" (the edges
+// decide), not as inside the other triangle. Triangles of size ~3e75 about
+// 2.7e81 apart; the quad-precision reference gives 2.6829e81.
+TEST(TriangleDistance, HugeCoordinatesWhoseEdgeTestsOverflow) {
+  const double s = std::ldexp(1.0, 251);
+  const Triangle a{{Vec3(1, 0, -1) * s, Vec3(-2, -1, 1) * s, Vec3(-2, 2, 2) * s}};
+  const Triangle b{
+      {Vec3(-524289, 0, 524288) * s, Vec3(-524290, -2, 524288) * s, Vec3(-524286, -3, 524287) * s}};
+  const TriangleDistance r = triangle_distance(a, b);
+  const TriangleDistance every = triangle_distance_every_candidate(a, b);
+  EXPECT_NEAR(r.distance, 2.6829e81, 1e-4 * 2.6829e81);
+  EXPECT_NEAR(r.distance, every.distance, 1e-12 * every.distance);
+  EXPECT_LE(r.point_b.x, -524286 * s * (1 - 1e-12));  // on b, not on its plane beyond it
+  EXPECT_EQ(r.feature_a, every.feature_a);
+  EXPECT_EQ(r.feature_b, every.feature_b);
+}
+
 TEST(TriangleDistance, ClosestPointOnTriangleRegions) {
   expect_point(closest_point_on_triangle(Vec3(0.2, 0.3, 5), kUnitXY), Vec3(0.2, 0.3, 0));
   expect_point(closest_point_on_triangle(Vec3(-1, -1, 0), kUnitXY), Vec3(0, 0, 0));

@@ -224,7 +224,9 @@ struct Prepared {
   Vec3 closest_point(const Vec3& p) const {
     const Vec3 q = p - (glm::dot(p - t->v[0], n) * inv_nn) * n;
     bool outside[3];
-    for (int k = 0; k < 3; ++k) outside[k] = glm::dot(m[k], q - t->v[k]) < 0.0;
+    // !(>= 0): a test that overflows to NaN (coordinates near 1e80) counts
+    // as outside, so the edges decide, as in closest_point_with_normal.
+    for (int k = 0; k < 3; ++k) outside[k] = !(glm::dot(m[k], q - t->v[k]) >= 0.0);
     if (!outside[0] && !outside[1] && !outside[2]) return q;
     // Outside: the closest point is on an edge whose line q is beyond.
     Vec3 best(0.0);
@@ -244,8 +246,12 @@ struct Prepared {
 // projections and the interval the triangle's own vertices project to
 // (any direction gives such a bound; the normals give tight ones). Holding
 // for any u, the bounds need u only to be a unit vector, not the exact
-// normal, so slivers are no exception; `error` covers the rounding of the
-// projections and of the local coordinates.
+// normal, so slivers are no exception. `error`, 16 eps times the largest
+// distance of a vertex from the local origin, covers the rounding of the
+// projections, of u's length, of the local coordinates and of the
+// candidates themselves: a margin, not a derived bound (on adversarial
+// inputs the bounds exceeded a computed candidate distance by at most about
+// 6 eps of that scale, and touching triangles' gap reached 1 eps).
 struct Bounds {
   double vertex[2][3];  // vertex i of triangle k from the other triangle
   double edge[2][3];    // edge i of triangle k from the other triangle
@@ -284,9 +290,13 @@ struct Bounds {
 // Two non-degenerate triangles: the same closest set from fewer candidates.
 // - An edge pair whose closest points include an end of an edge adds
 //   nothing: that end against the other triangle (a vertex-face candidate)
-//   is at least as close, and is the same pair when it ties. So an edge pair
-//   adds a candidate only when its closest points lie inside both edges
-//   (or, for parallel edges, at the middle of their overlap).
+//   is at least as close, and is the same pair when the two tie exactly. So
+//   an edge pair adds a candidate only when its closest points lie inside
+//   both edges (or, for parallel edges, at the middle of their overlap).
+//   (Within the tie tolerance such an edge point can lie up to
+//   sqrt(2 d tolerance) from the vertex-face one; the full enumeration
+//   averaged it in, which under a sliver's vertex could name the face where
+//   the quad-precision reference names the vertex.)
 // - A candidate whose lower bound (Bounds) is beyond the tie tolerance of
 //   the best one found so far cannot tie with the minimum, so it is not
 //   computed: it would not have tied in the full enumeration either.
