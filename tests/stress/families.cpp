@@ -320,6 +320,49 @@ std::vector<Case> slivers(std::uint64_t seed, int count) {
   });
 }
 
+// A vertex of b near a vertex of a sliver a (angles 1e-8..1e-2): the sharp
+// tip of a needle, or the obtuse vertex of a cap, above it by 1e-10..0.1 and
+// off it in the plane by 1e-16..1e-6, inside a or out. Behind a needle's tip,
+// within about eps L / angle of it, the point is within rounding of both long
+// edges' lines; near a cap's obtuse vertex, just inside, it is within
+// rounding of both short edges' lines. Edge tests taken from the edges' far
+// ends can round either way there.
+std::vector<Case> sliver_apex(std::uint64_t seed, int count) {
+  return make_cases(seed, count, [](Rng& rng) {
+    Case c;
+    const double angle = rng.log_uniform(-8.0, -2.0);
+    double phi = 0.0;
+    Vec3 tip;
+    if (rng.coin()) {  // a needle: tip at the origin, tip angle `angle`
+      const double l = rng.uniform(0.5, 1.5);
+      c.a = {{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(l * std::cos(angle), l * std::sin(angle), 0)}};
+      const double bisector = 0.5 * angle;
+      switch (rng.integer(0, 2)) {
+        case 0: phi = bisector + M_PI + rng.uniform(-1.0, 1.0) * angle; break;  // behind the tip
+        case 1: phi = bisector + rng.uniform(-0.5, 0.5) * angle; break;         // inside the wedge
+        default: phi = rng.uniform(-M_PI, M_PI); break;
+      }
+      tip = Vec3(0.0);
+    } else {  // a cap: vertex c at (t, w), its angle pi - about 2 w / (t (1 - t))
+      const double t = rng.uniform(0.2, 0.8), w = angle * t * (1.0 - t);
+      c.a = {{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(t, w, 0)}};
+      switch (rng.integer(0, 2)) {
+        case 0: phi = -0.5 * M_PI + rng.uniform(-1.0, 1.0) * (0.5 * M_PI); break;  // inside, below c
+        case 1: phi = rng.coin() ? rng.uniform(-angle, angle) : M_PI + rng.uniform(-angle, angle); break;
+        default: phi = rng.uniform(-M_PI, M_PI); break;
+      }
+      tip = c.a.v[2];
+    }
+    const double r = rng.log_uniform(-16.0, -6.0), h = rng.log_uniform(-10.0, -1.0);
+    const Vec3 p = tip + Vec3(r * std::cos(phi), r * std::sin(phi), h);
+    const double s = rng.log_uniform(-3.0, 0.0);
+    c.b = {{p, p + s * Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(0.5, 1)),
+            p + s * Vec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(0.5, 1))}};
+    move(c, rng.rotation(), rng.vec(-1, 1));
+    return c;
+  });
+}
+
 std::vector<Case> degenerate(std::uint64_t seed, int count) {
   return make_cases(seed, count, [](Rng& rng) {
     Case c;
@@ -395,6 +438,7 @@ const std::vector<Family>& families() {
       {"crossing", "both faces cross, intersection segment inside both", crossing, {8, 0, 1e-12}},
       {"piercing", "an edge of a small b through a large a", piercing, {8, 0, 1e-12}},
       {"slivers", "aspect ratio 1e-8..1, gaps 1e-7..1", slivers, {8, 0, 1e-9}},
+      {"sliver_apex", "a vertex near a needle's tip or a cap's obtuse vertex (1e-8..1e-2 rad)", sliver_apex, {8, 0, 1e-9}},
       {"degenerate", "zero-area: collinear or repeated vertices", degenerate, {8, 0, 1e-12}},
       {"points", "all three vertices equal", points, {8, 0, 1e-12}},
       {"scales", "general, scaled by 1e-6..1e6", scales, {8, 0, 1e-12}},

@@ -52,9 +52,22 @@ TEST_P(StressFamily, MeetsItsBounds) {
                                    << ", max gap error / L = " << s.max_gap_error;
 }
 
+// Whether feature `outer` of a triangle holds feature `inner` (a face holds
+// everything, edge k its vertices k and k + 1).
+bool holds(Feature outer, Feature inner) {
+  if (outer == inner || outer.kind == FeatureKind::Face) return true;
+  return outer.kind == FeatureKind::Edge && inner.kind == FeatureKind::Vertex &&
+         (inner.index == outer.index || inner.index == (outer.index + 1) % 3);
+}
+
 // triangle_distance computes only the candidates that can tie with the
 // minimum; the full enumeration of all 15 must give the same verdict and
-// features on every case, and the same distance to rounding. (The reported
+// features on every case, and the same distance to rounding. One difference
+// is allowed: the full enumeration may name a feature holding the pruned
+// kernel's. Near a sliver's tip both long edges' candidates lie within the
+// tie tolerance; the full enumeration averages them and names the face,
+// where the pruned kernel, which skips edge pairs that end at a vertex,
+// names the one edge (or vertex) the point is nearest. (The reported
 // points may differ where the closest set is not a point: both are the
 // average of tied candidates, the full one with repeats; the stress test
 // above checks they lie on their triangles the distance apart.)
@@ -77,7 +90,7 @@ TEST_P(StressFamily, PrunedCandidatesAgreeWithEveryCandidate) {
           coord = std::max({coord, std::abs(t->v[k].x), std::abs(t->v[k].y), std::abs(t->v[k].z)});
         }
       const bool verdict = fast.intersects != every.intersects;
-      const bool feature = fast.feature_a != every.feature_a || fast.feature_b != every.feature_b;
+      const bool feature = !holds(every.feature_a, fast.feature_a) || !holds(every.feature_b, fast.feature_b);
       const bool distance = !(std::abs(fast.distance - every.distance) <=
                               16.0 * kEps * std::max(size, every.distance) + 4.0 * kEps * coord);
       verdicts += verdict, features += feature, distances += distance;
@@ -108,6 +121,51 @@ TEST(StressCase, NearParallelEdgesInteriorPointIsPolished) {
   for (const geometry::TriangleDistance& r :
        {geometry::triangle_distance(a, b), geometry::triangle_distance_every_candidate(a, b)})
     EXPECT_NEAR(r.distance, reference, 8.0 * kEps * glm::length(a.v[1] - a.v[0]));
+}
+
+// A vertex of b 8.5e-10 behind the tip of a sliver (tip angle 3.0e-8) and
+// 1.9e-9 above its plane: each long edge's test, taken from the edge's far
+// end, rounded to "inside", and the vertex was projected onto the face,
+// 1.8e-10 nearer than it is (10^5 times the bound of 8 ulps of the size;
+// found by the family sliver_apex, 20,000 cases at seed 77). Taken
+// from the nearer end, the tests see it outside.
+TEST(StressCase, VertexBehindASliversTipIsNotProjectedOntoItsFace) {
+  const Triangle a{{Vec3(0.63830855550458621, -0.86556930151255385, -0.23987045500317972),
+                    Vec3(0.22794511458709277, -1.6138921626282055, -0.76103716718848391),
+                    Vec3(0.21868934024349168, -1.6307706280481109, -0.77279214926118689)}};
+  const Triangle b{{Vec3(0.6383085575555062, -0.86556930170277624, -0.23987045470595134),
+                    Vec3(0.64389830399375381, -0.90977603221266845, -0.24580734957698921),
+                    Vec3(0.666615673157124, -0.85804517214860554, -0.22304652732970703)}};
+  const double reference = to_double(reference_distance(a, b).distance);
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  const double size = glm::length(a.v[2] - a.v[0]);
+  for (int swap = 0; swap < 2; ++swap) {
+    const geometry::TriangleDistance r = swap ? geometry::triangle_distance(b, a) : geometry::triangle_distance(a, b);
+    EXPECT_NEAR(r.distance, reference, 8.0 * kEps * size) << "swap " << swap;
+  }
+  EXPECT_NEAR(geometry::triangle_distance_every_candidate(a, b).distance, reference, 8.0 * kEps * size);
+}
+
+// The other way round: a vertex of b 1.8e-10 above a cap sliver (its obtuse
+// angle pi - 1.5e-8), inside it 9.4e-10 from the obtuse vertex. A short
+// edge's test, taken from its far end, rounded to "outside", and the
+// distance to the edge, 9.6e-10, was reported (4e5 times the bound; the
+// worst of the family sliver_apex's 2,000 cases at the suite's seed).
+TEST(StressCase, VertexAboveACapSliversObtuseVertexIsProjectedOntoItsFace) {
+  const Triangle a{{Vec3(-0.64724444752910815, 0.59657902375678939, -0.56395061195168794),
+                    Vec3(-1.1574803501753674, 0.54500002651941171, 0.29453580651673728),
+                    Vec3(-0.85776479071705736, 0.57529783082762775, -0.20974414220415077)}};
+  const Triangle b{{Vec3(-0.85776479115651372, 0.57529783094811626, -0.20974414136165315),
+                    Vec3(-0.84242944461918845, 0.58615623107491133, -0.19406130657090737),
+                    Vec3(-0.8621456152437037, 0.59031902023238758, -0.20209095222982199)}};
+  const double reference = to_double(reference_distance(a, b).distance);
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  const double size = glm::length(a.v[1] - a.v[0]);
+  for (int swap = 0; swap < 2; ++swap) {
+    const geometry::TriangleDistance r = swap ? geometry::triangle_distance(b, a) : geometry::triangle_distance(a, b);
+    EXPECT_NEAR(r.distance, reference, 8.0 * kEps * size) << "swap " << swap;
+  }
+  EXPECT_NEAR(geometry::triangle_distance_every_candidate(a, b).distance, reference, 8.0 * kEps * size);
 }
 
 INSTANTIATE_TEST_SUITE_P(Families, StressFamily, ::testing::ValuesIn(families()),

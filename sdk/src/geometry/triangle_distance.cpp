@@ -116,6 +116,20 @@ Vec3 robust_normal(const Triangle& t) {
   return n;
 }
 
+// Whether q is beyond edge k (from vertex k to k + 1), given m[k], a normal
+// of the edge in the triangle's plane pointing inwards, and d[i] = q - v[i]
+// with dd[i] its squared length. The test is taken from the edge's end
+// nearer q: its error is then relative to that distance, not to the
+// triangle's size. Taken from a far end, a point within rounding of a line
+// passes its test either way, and a point just behind a sliver's sharp
+// vertex (within eps L / angle of it) could pass both long edges' tests and
+// be projected onto the face, off by up to that much. A test that overflows
+// to NaN (coordinates near 1e80) counts as outside, so the edges decide.
+inline bool edge_outside(const Vec3 (&m)[3], const Vec3 (&d)[3], const double (&dd)[3], int k) {
+  const int j = k == 2 ? 0 : k + 1;
+  return !(glm::dot(m[k], dd[j] < dd[k] ? d[j] : d[k]) >= 0.0);
+}
+
 // With the triangle's robust_normal computed once by the caller.
 Vec3 closest_point_with_normal(const Vec3& p, const Triangle& t, const Vec3& n) {
   const Vec3 &a = t.v[0], &b = t.v[1], &c = t.v[2];
@@ -124,9 +138,10 @@ Vec3 closest_point_with_normal(const Vec3& p, const Triangle& t, const Vec3& n) 
     // Project onto the plane; keep the projection when it falls inside
     // (edge tests against the normal, so any winding works).
     const Vec3 q = p - (glm::dot(p - a, n) / nn) * n;
-    if (glm::dot(glm::cross(b - a, q - a), n) >= 0.0 && glm::dot(glm::cross(c - b, q - b), n) >= 0.0 &&
-        glm::dot(glm::cross(a - c, q - c), n) >= 0.0)
-      return q;
+    const Vec3 d[3] = {q - a, q - b, q - c};
+    const double dd[3] = {length2(d[0]), length2(d[1]), length2(d[2])};
+    const Vec3 m[3] = {glm::cross(n, b - a), glm::cross(n, c - b), glm::cross(n, a - c)};
+    if (!edge_outside(m, d, dd, 0) && !edge_outside(m, d, dd, 1) && !edge_outside(m, d, dd, 2)) return q;
   }
   // Outside (or a degenerate triangle): the closest point is on an edge.
   Vec3 best = closest_point_on_segment(p, a, b);
@@ -209,8 +224,8 @@ void add_every_candidate(const Triangle& a, const Triangle& b, bool a_flat, bool
 // edges (edge k from vertex k to k + 1), their squared lengths and inverses, the
 // robust normal (robust_normal's arithmetic on these edges) and, for each
 // edge, the in-plane normal n x e_k: a point is on the triangle's side of
-// edge k when its dot product with that, taken from vertex k, is >= 0,
-// whatever the winding.
+// edge k when its dot product with that, taken from the edge's nearer end,
+// is >= 0, whatever the winding (edge_outside).
 struct Prepared {
   const Triangle* t;
   Vec3 e[3];
@@ -240,10 +255,10 @@ struct Prepared {
   // closest_point_with_normal, from the prepared parts.
   Vec3 closest_point(const Vec3& p) const {
     const Vec3 q = p - (glm::dot(p - t->v[0], n) * inv_nn) * n;
+    const Vec3 d[3] = {q - t->v[0], q - t->v[1], q - t->v[2]};
+    const double dd[3] = {length2(d[0]), length2(d[1]), length2(d[2])};
     bool outside[3];
-    // !(>= 0): a test that overflows to NaN (coordinates near 1e80) counts
-    // as outside, so the edges decide, as in closest_point_with_normal.
-    for (int k = 0; k < 3; ++k) outside[k] = !(glm::dot(m[k], q - t->v[k]) >= 0.0);
+    for (int k = 0; k < 3; ++k) outside[k] = edge_outside(m, d, dd, k);
     if (!outside[0] && !outside[1] && !outside[2]) return q;
     // Outside: the closest point is on an edge whose line q is beyond.
     Vec3 best(0.0);
