@@ -416,6 +416,32 @@ std::vector<Case> far_from_origin(std::uint64_t seed, int count) {
   return out;
 }
 
+// Triangles 10^2..10^6 of their size apart: half parallel faces (a's plane
+// z = 0 and b's at a power of two, then rotated, so parallel to rounding:
+// the closest set is a region), half general pairs moved apart. The candidates' distances carry
+// the rounding of coordinates that large, which must not break their ties.
+std::vector<Case> far_apart(std::uint64_t seed, int count) {
+  return make_cases(seed, count, [](Rng& rng) {
+    Case c;
+    if (rng.coin()) {
+      const double h = std::ldexp(1.0, rng.integer(7, 20));
+      c.a = around_origin_z0(rng);
+      const double s = rng.dyadic(0.01, 0.08);
+      c.b = {{Vec3(-s, -s, h), Vec3(s, -s, h), Vec3(0, s, h)}};
+      c.known = Case::Known::Disjoint;
+      // Face against face, once the planes' tilt by the rotation's rounding
+      // (eps L across a) is within the rounding of the distances (eps D).
+      c.known_features = true;
+      move(c, rng.rotation(), rng.vec(-1, 1));
+    } else {
+      c.a = random_triangle(rng, Vec3(0.0), 1.0);
+      c.b = random_triangle(rng, rng.unit() * rng.log_uniform(2.0, 6.0), 1.0);
+      c.known = Case::Known::Disjoint;
+    }
+    return c;
+  });
+}
+
 }  // namespace
 
 const std::vector<Family>& families() {
@@ -443,6 +469,7 @@ const std::vector<Family>& families() {
       {"points", "all three vertices equal", points, {8, 0, 1e-12}},
       {"scales", "general, scaled by 1e-6..1e6", scales, {8, 0, 1e-12}},
       {"far_from_origin", "general, translated 1..1e6 sizes away", far_from_origin, {8, 8, 1e-12}},
+      {"far_apart", "1e2..1e6 sizes apart: parallel faces, or general", far_apart, {8, 0, 1e-12}},
   };
   return all;
 }

@@ -284,18 +284,25 @@ struct Prepared {
 // candidates themselves: a margin, not a derived bound (on adversarial
 // inputs the bounds exceeded a computed candidate distance by at most about
 // 6 eps of that scale, and touching triangles' gap reached 1 eps).
+// 16 eps times the largest distance of a vertex of a or b (local
+// coordinates) from the local origin: a margin for the rounding of a
+// candidate's distance (see Bounds).
+double distance_rounding(const Triangle& a, const Triangle& b) {
+  double span2 = 0.0;
+  for (const Triangle* t : {&a, &b})
+    for (const Vec3& v : t->v) span2 = std::max(span2, length2(v));
+  return 16.0 * kEpsilon * std::sqrt(span2);
+}
+
 struct Bounds {
   double vertex[2][3];  // vertex i of triangle k from the other triangle
   double edge[2][3];    // edge i of triangle k from the other triangle
   double error = 0.0;
   bool separated = false;  // by more than `error` along a normal: the triangles do not meet
 
-  Bounds(const Prepared& pa, const Prepared& pb) {
+  // `rounding`: distance_rounding of the pair.
+  Bounds(const Prepared& pa, const Prepared& pb, double rounding) : error(rounding) {
     const Prepared* p[2] = {&pa, &pb};
-    double span2 = 0.0;
-    for (const Prepared* t : p)
-      for (const Vec3& v : t->t->v) span2 = std::max(span2, length2(v));
-    error = 16.0 * kEpsilon * std::sqrt(span2);
     for (int k = 0; k < 2; ++k) {
       const Prepared& self = *p[k];
       const Prepared& other = *p[1 - k];
@@ -477,17 +484,22 @@ namespace {
 // `every`: the full enumeration even where the pruned one applies.
 TriangleDistance distance_of(const Triangle& a_world, const Triangle& b_world, bool every) {
   const double size_a = longest_edge(a_world), size_b = longest_edge(b_world);
-  const double tie_slack = kTieTolerance * std::max(size_a, size_b);
   const bool a_flat = collinear3d(a_world.v[0], a_world.v[1], a_world.v[2]);
   const bool b_flat = collinear3d(b_world.v[0], b_world.v[1], b_world.v[2]);
   const Vec3 origin = local_origin(a_world, b_world);
   const Triangle a = translated(a_world, origin), b = translated(b_world, origin);
+  // Candidates tie within kTieTolerance of the size, or within their own
+  // rounding where that is larger: triangles more than about 300 sizes
+  // apart have local coordinates that large, and exactly tied candidates
+  // (parallel faces or edges) then differ by more than the size's tolerance.
+  const double rounding = distance_rounding(a, b);
+  const double tie_slack = std::max(kTieTolerance * std::max(size_a, size_b), rounding);
   CandidateList cand;
 
   if (!every && !a_flat && !b_flat) {
     const Prepared pa(a), pb(b);
     if (pa.usable() && pb.usable()) {
-      const Bounds bounds(pa, pb);
+      const Bounds bounds(pa, pb, rounding);
       // Separated along a normal, they do not meet: the exact test would
       // say so too.
       if (!bounds.separated) {
