@@ -273,6 +273,16 @@ struct Prepared {
   }
 };
 
+// 16 eps times the largest distance of a vertex of a or b (local
+// coordinates) from the local origin: a margin for the rounding of a
+// candidate's distance (see Bounds).
+double distance_rounding(const Triangle& a, const Triangle& b) {
+  double span2 = 0.0;
+  for (const Triangle* t : {&a, &b})
+    for (const Vec3& v : t->v) span2 = std::max(span2, length2(v));
+  return 16.0 * kEpsilon * std::sqrt(span2);
+}
+
 // Lower bounds from the two normals: along each triangle's unit normal u,
 // the other's vertices and edges are at least the gap between their
 // projections and the interval the triangle's own vertices project to
@@ -284,16 +294,6 @@ struct Prepared {
 // candidates themselves: a margin, not a derived bound (on adversarial
 // inputs the bounds exceeded a computed candidate distance by at most about
 // 6 eps of that scale, and touching triangles' gap reached 1 eps).
-// 16 eps times the largest distance of a vertex of a or b (local
-// coordinates) from the local origin: a margin for the rounding of a
-// candidate's distance (see Bounds).
-double distance_rounding(const Triangle& a, const Triangle& b) {
-  double span2 = 0.0;
-  for (const Triangle* t : {&a, &b})
-    for (const Vec3& v : t->v) span2 = std::max(span2, length2(v));
-  return 16.0 * kEpsilon * std::sqrt(span2);
-}
-
 struct Bounds {
   double vertex[2][3];  // vertex i of triangle k from the other triangle
   double edge[2][3];    // edge i of triangle k from the other triangle
@@ -489,7 +489,7 @@ TriangleDistance distance_of(const Triangle& a_world, const Triangle& b_world, b
   const Vec3 origin = local_origin(a_world, b_world);
   const Triangle a = translated(a_world, origin), b = translated(b_world, origin);
   // Candidates tie within kTieTolerance of the size, or within their own
-  // rounding where that is larger: triangles more than about 300 sizes
+  // rounding where that is larger: triangles more than about 600 sizes
   // apart have local coordinates that large, and exactly tied candidates
   // (parallel faces or edges) then differ by more than the size's tolerance.
   const double rounding = distance_rounding(a, b);
