@@ -127,8 +127,9 @@ TEST(StressCase, NearParallelEdgesInteriorPointIsPolished) {
 // 1.9e-9 above its plane: each long edge's test, taken from the edge's far
 // end, rounded to "inside", and the vertex was projected onto the face,
 // 1.8e-10 nearer than it is (10^5 times the bound of 8 ulps of the size;
-// found by the family sliver_apex, 20,000 cases at seed 77). Taken
-// from the nearer end, the tests see it outside.
+// found by a first version of the family sliver_apex, needles only,
+// 20,000 cases at seed 77). Taken from the nearer end, the tests see it
+// outside.
 TEST(StressCase, VertexBehindASliversTipIsNotProjectedOntoItsFace) {
   const Triangle a{{Vec3(0.63830855550458621, -0.86556930151255385, -0.23987045500317972),
                     Vec3(0.22794511458709277, -1.6138921626282055, -0.76103716718848391),
