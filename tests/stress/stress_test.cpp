@@ -123,6 +123,16 @@ TEST(StressCase, NearParallelEdgesInteriorPointIsPolished) {
     EXPECT_NEAR(r.distance, reference, 8.0 * kEps * glm::length(a.v[1] - a.v[0]));
 }
 
+// Both argument orders and the full enumeration within 8 ulps of `size` of
+// the quad-precision distance.
+void expect_distance_to_reference(const Triangle& a, const Triangle& b, double size) {
+  const double reference = to_double(reference_distance(a, b).distance);
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  EXPECT_NEAR(geometry::triangle_distance(a, b).distance, reference, 8.0 * kEps * size) << "a, b";
+  EXPECT_NEAR(geometry::triangle_distance(b, a).distance, reference, 8.0 * kEps * size) << "b, a";
+  EXPECT_NEAR(geometry::triangle_distance_every_candidate(a, b).distance, reference, 8.0 * kEps * size);
+}
+
 // A vertex of b 8.5e-10 behind the tip of a sliver (tip angle 3.0e-8) and
 // 1.9e-9 above its plane: each long edge's test, taken from the edge's far
 // end, rounded to "inside", and the vertex was projected onto the face,
@@ -137,14 +147,7 @@ TEST(StressCase, VertexBehindASliversTipIsNotProjectedOntoItsFace) {
   const Triangle b{{Vec3(0.6383085575555062, -0.86556930170277624, -0.23987045470595134),
                     Vec3(0.64389830399375381, -0.90977603221266845, -0.24580734957698921),
                     Vec3(0.666615673157124, -0.85804517214860554, -0.22304652732970703)}};
-  const double reference = to_double(reference_distance(a, b).distance);
-  constexpr double kEps = std::numeric_limits<double>::epsilon();
-  const double size = glm::length(a.v[2] - a.v[0]);
-  for (int swap = 0; swap < 2; ++swap) {
-    const geometry::TriangleDistance r = swap ? geometry::triangle_distance(b, a) : geometry::triangle_distance(a, b);
-    EXPECT_NEAR(r.distance, reference, 8.0 * kEps * size) << "swap " << swap;
-  }
-  EXPECT_NEAR(geometry::triangle_distance_every_candidate(a, b).distance, reference, 8.0 * kEps * size);
+  expect_distance_to_reference(a, b, glm::length(a.v[2] - a.v[0]));
 }
 
 // The other way round: a vertex of b 1.8e-10 above a cap sliver (its obtuse
@@ -159,14 +162,7 @@ TEST(StressCase, VertexAboveACapSliversObtuseVertexIsProjectedOntoItsFace) {
   const Triangle b{{Vec3(-0.85776479115651372, 0.57529783094811626, -0.20974414136165315),
                     Vec3(-0.84242944461918845, 0.58615623107491133, -0.19406130657090737),
                     Vec3(-0.8621456152437037, 0.59031902023238758, -0.20209095222982199)}};
-  const double reference = to_double(reference_distance(a, b).distance);
-  constexpr double kEps = std::numeric_limits<double>::epsilon();
-  const double size = glm::length(a.v[1] - a.v[0]);
-  for (int swap = 0; swap < 2; ++swap) {
-    const geometry::TriangleDistance r = swap ? geometry::triangle_distance(b, a) : geometry::triangle_distance(a, b);
-    EXPECT_NEAR(r.distance, reference, 8.0 * kEps * size) << "swap " << swap;
-  }
-  EXPECT_NEAR(geometry::triangle_distance_every_candidate(a, b).distance, reference, 8.0 * kEps * size);
+  expect_distance_to_reference(a, b, glm::length(a.v[1] - a.v[0]));
 }
 
 INSTANTIATE_TEST_SUITE_P(Families, StressFamily, ::testing::ValuesIn(families()),
