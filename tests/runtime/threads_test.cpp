@@ -393,16 +393,27 @@ TEST_F(ThreadsTest, BadSettingsAreRefusedByName) {
       {[](ThreadSettings& s) { s.max_torque_rate = 0.0; }, "torque rate"},
       {[](ThreadSettings& s) { s.trust_distance = -1.0; }, "trust distance"},
       {[](ThreadSettings& s) { s.max_contacts = 0; }, "contacts"},
+      {[](ThreadSettings& s) { s.max_contacts = 1 << 30; }, "contacts"},
       {[](ThreadSettings& s) { s.cores[1] = 4096; }, "local thread's core"},
   };
   for (const Case& c : cases) {
     ThreadSettings s;
     c.spoil(s);
     Status status;
-    EXPECT_FALSE(world_->start_threads(s, status)) << c.word;
+    prox::testing::reset_marked_counts();
+    bool started = false;
+    {
+      prox::testing::MarkedScope marked;
+      started = world_->start_threads(s, status);
+    }
+    EXPECT_FALSE(started) << c.word;
     EXPECT_NE(status.message().find(c.word), std::string::npos) << status.message();
     EXPECT_FALSE(world_->running());
+    // Refused before the snapshots' storage is reserved (max_contacts
+    // contacts, three times a tool): nothing bigger than the message.
+    EXPECT_LT(prox::testing::marked_largest_allocation(), 1024u) << c.word;
   }
+  prox::testing::reset_marked_counts();
 }
 
 }  // namespace

@@ -13,9 +13,15 @@ namespace {
 thread_local bool t_marked = false;
 std::atomic<long> g_allocations{0};
 std::atomic<long> g_locks{0};
+std::atomic<std::size_t> g_largest{0};
 
 void* allocate(std::size_t n) {
-  if (t_marked) g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (t_marked) {
+    g_allocations.fetch_add(1, std::memory_order_relaxed);
+    std::size_t largest = g_largest.load(std::memory_order_relaxed);
+    while (n > largest && !g_largest.compare_exchange_weak(largest, n, std::memory_order_relaxed)) {
+    }
+  }
   if (void* p = std::malloc(n ? n : 1)) return p;
   throw std::bad_alloc();
 }
@@ -52,8 +58,10 @@ void mark_this_thread(bool marked) { t_marked = marked; }
 bool this_thread_marked() { return t_marked; }
 long marked_allocations() { return g_allocations.load(std::memory_order_relaxed); }
 long marked_locks() { return g_locks.load(std::memory_order_relaxed); }
+std::size_t marked_largest_allocation() { return g_largest.load(std::memory_order_relaxed); }
 void reset_marked_counts() {
   g_allocations.store(0, std::memory_order_relaxed);
+  g_largest.store(0, std::memory_order_relaxed);
   g_locks.store(0, std::memory_order_relaxed);
 }
 

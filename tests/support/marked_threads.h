@@ -7,6 +7,8 @@
 // also catch the calls libproxima.so makes.
 #pragma once
 
+#include <cstddef>
+
 namespace prox::testing {
 
 // Marks or unmarks the calling thread.
@@ -15,6 +17,8 @@ bool this_thread_marked();
 // Counts since the program started, over every marked thread.
 long marked_allocations();
 long marked_locks();
+// The largest single allocation on a marked thread, in bytes.
+std::size_t marked_largest_allocation();
 // Back to zero (between tests of one program, after checking that the
 // counting sees the library's own calls).
 void reset_marked_counts();

@@ -114,8 +114,8 @@ Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), 
     tool->wrench.store({b.wrench});
     tool->contacts = b.contacts;
     // The haptic loop's snapshots never grow once the threads run. Clamped
-    // to the range start() accepts: it validates after this constructor,
-    // and an unchecked count must not reserve gigabytes first.
+    // to the range check() accepts, for a Threads constructed without asking
+    // it first (World::start_threads asks).
     for (int k = 0; k < 3; ++k)
       tool->snapshots.buffer(k).contacts.reserve(
           static_cast<std::size_t>(std::clamp(settings_.max_contacts, 1, kMaxContactsPerTool)));
@@ -129,8 +129,7 @@ Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), 
 
 Threads::~Threads() { stop(); }
 
-bool Threads::start(Status& status) {
-  const ThreadSettings& s = settings_;
+bool Threads::check(const ThreadSettings& s, Status& status) {
   auto bad = [&status](const std::string& message) {
     status = Status(StatusCode::InvalidArgument, message);
     return false;
@@ -156,7 +155,6 @@ bool Threads::start(Status& status) {
   if (s.max_contacts < 1 || s.max_contacts > kMaxContactsPerTool)
     return bad("maximum contacts per tool must be in [1, 1048576] (it is " + std::to_string(s.max_contacts) +
                ")");
-  if (s.trust_distance == 0.0) settings_.trust_distance = world_.settings_.cutoff;
   const double haptic_period = 1.0 / s.haptic_rate;
   if (s.haptic_timing != HapticTiming::Auto && s.haptic_timing != HapticTiming::Sleep &&
       s.haptic_timing != HapticTiming::Spin)
@@ -176,6 +174,13 @@ bool Threads::start(Status& status) {
     if (s.cores[r] < -1 || (cores > 0 && s.cores[r] >= cores))
       return bad(std::string(names[r]) + " thread's core " + std::to_string(s.cores[r]) +
                  " is not -1 or in [0, " + std::to_string(cores) + ")");
+  return true;
+}
+
+bool Threads::start(Status& status) {
+  const ThreadSettings& s = settings_;
+  if (!check(s, status)) return false;
+  if (s.trust_distance == 0.0) settings_.trust_distance = world_.settings_.cutoff;
   loop_stats_[int(Role::Haptic)].reset(s.haptic_rate);
   loop_stats_[int(Role::Local)].reset(s.local_rate);
   loop_stats_[int(Role::Global)].reset(s.global_rate);

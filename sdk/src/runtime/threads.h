@@ -95,7 +95,11 @@ class Threads {
   Threads(const Threads&) = delete;
   Threads& operator=(const Threads&) = delete;
 
-  // Validates the settings and starts the threads (false, with `status`).
+  // Whether the settings can start threads (false, with `status` naming
+  // what is wrong). World::start_threads asks before constructing, so that
+  // refused settings reserve no snapshot storage.
+  static bool check(const ThreadSettings& settings, Status& status);
+  // Checks the settings and starts the threads (false, with `status`).
   bool start(Status& status);
   // Fades every device's wrench out, then stops and joins the threads.
   void stop();

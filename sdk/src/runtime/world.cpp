@@ -176,6 +176,7 @@ StepStats World::stats() const { return running() ? threads_->step_stats() : sta
 
 bool World::start_threads(const ThreadSettings& settings, Status& status) {
   if (running()) return true;
+  if (!Threads::check(settings, status)) return false;  // before any storage is reserved
   auto threads = std::make_unique<Threads>(*this, settings);
   if (!threads->start(status)) return false;
   threads_ = std::move(threads);
