@@ -25,6 +25,7 @@
 #include <new>
 #include <random>
 #include <thread>
+#include <utility>
 
 namespace prox::runtime {
 namespace {
@@ -252,6 +253,40 @@ TEST_F(ThreadsTest, StalledGlobalSearchKeepsTheForce) {
   EXPECT_TRUE(wait_until([&] { return threads.loop_summary(Role::Local).updates > local_before + 50; }));
   EXPECT_TRUE(at_rest_force()) << "local tracking alone holds the contacts";
   threads.stall(Role::Global, false);
+  expect_safe_output();
+}
+
+// The tool leaves its contacts' range and comes back to the very pose the
+// global search last saw, all while the search is busy (stalled here, slow
+// on a loaded machine): local tracking dropped the contacts out there, and
+// only the global search can bring them back, though the pose it sees next
+// is the one it has already searched.
+TEST_F(ThreadsTest, AnExcursionTheGlobalSearchMissesDoesNotLoseTheContacts) {
+  FaultyDevice* device = nullptr;
+  start_and_settle(device);
+  Threads& threads = *world_->threads();
+  threads.stall(Role::Global, true);
+  // Parked once its iteration in flight has ended: no more updates.
+  std::uint64_t seen = threads.loop_summary(Role::Global).updates;
+  ASSERT_TRUE(wait_until([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    const std::uint64_t now = threads.loop_summary(Role::Global).updates;
+    return std::exchange(seen, now) == now;
+  }));
+  device->fault.store(FaultyDevice::Teleport);
+  std::vector<Contact> contacts;
+  ASSERT_TRUE(wait_until([&] {
+    world_->contacts(tool_, contacts);
+    return contacts.empty();
+  })) << "local tracking kept contacts 20 cm away";
+  device->fault.store(FaultyDevice::None);
+  // Tracked back at the resting pose, with nothing left to track.
+  const std::uint64_t local_before = threads.loop_summary(Role::Local).updates;
+  ASSERT_TRUE(wait_until([&] { return threads.loop_summary(Role::Local).updates > local_before + 10; }));
+  threads.stall(Role::Global, false);
+  EXPECT_TRUE(settled()) << "the contacts lost out there never came back";
+  world_->contacts(tool_, contacts);
+  EXPECT_EQ(contacts.size(), expected_.lmds.size());
   expect_safe_output();
 }
 

@@ -442,7 +442,8 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
   // LMDs from two different minima of a flat field, and both would count
   // them; the new patches replace the tracked ones.
   const bool join_tracked = method == Method::Original || !world_.settings_.patches.enabled();
-  if (tool.global.update()) {
+  const bool adopted = tool.global.update();
+  if (adopted) {
     const GlobalResult& g = tool.global.front();
     std::vector<LocalPair> next(g.pairs.size());
     for (std::size_t i = 0; i < g.pairs.size(); ++i) {
@@ -472,6 +473,7 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
     sample.pose = tool.proxy_state.pose;  // contacts are tracked at the proxy
   }
   std::size_t total = 0;
+  std::uint32_t dropped = 0;
   for (LocalPair& lp : tool.local_pairs) {
     const World::BodySlot& other = world_.bodies_[lp.other];
     const World::MeshData& other_mesh = *world_.meshes_[other.mesh].data;
@@ -480,7 +482,11 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
     LocalTrackingStats stats;
     lp.tracker.update(q, lp.lmds, stats);
     total += lp.lmds.size();
+    dropped += stats.dropped_out_of_range + stats.duplicates_dropped;
   }
+  // Adopting a result drops the tracked LMDs it already has; that loses
+  // nothing.
+  if (dropped > 0 && !adopted) tool.losses.fetch_add(1, std::memory_order_relaxed);
 
   // The snapshot for the haptic loop: the closest max_contacts contacts,
   // the tool's points in its own frame.
@@ -584,17 +590,21 @@ void Threads::global_main() {
       const int searched_before = stats.pairs_searched;
       world_.search_tool(tool->body, broadphase, pairs, in_range, stats);
       for (const PairInRange& p : in_range) stats.contacts += static_cast<int>(p.slot->lmds.size());
-      // Nothing searched and the same pairs in range: the local thread
-      // already has this answer (and has tracked it further); don't make it
-      // merge the same set again.
+      // Nothing searched, the same pairs in range and no LMDs lost since:
+      // the local thread already has this answer (and has tracked it
+      // further); don't make it merge the same set again.
+      const std::uint64_t losses = tool->losses.load(std::memory_order_relaxed);
       bool same_pairs = in_range.size() == tool->published_others.size();
       for (std::size_t i = 0; same_pairs && i < in_range.size(); ++i)
         same_pairs = in_range[i].other == tool->published_others[i];
       // A constrained tool's proxy must also learn that nothing is in range
       // where it now is (its anchor moves with each result).
       const bool proxy_moved = tool->constrained && tool->published_version != tool_version[k];
-      if (stats.pairs_searched == searched_before && same_pairs && !proxy_moved) continue;
+      if (stats.pairs_searched == searched_before && same_pairs && !proxy_moved &&
+          losses == tool->published_losses)
+        continue;
       tool->published_version = tool_version[k];
+      tool->published_losses = losses;
       tool->published_others.clear();
       for (const PairInRange& p : in_range) tool->published_others.push_back(p.other);
       GlobalResult& r = tool->global.back();

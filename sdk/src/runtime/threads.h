@@ -173,6 +173,12 @@ class Threads {
     std::vector<LocalPair> local_pairs;           // local's own
     std::uint64_t published = 0;                  // local's own: snapshots so far
     std::vector<std::uint32_t> published_others;  // global's own: the pairs it last handed over
+    // Local tracking's updates that dropped LMDs (out of range, or merged
+    // into another) other than the one adopting a global result: only a
+    // global result brings those back, even where the pose the search sees
+    // has not changed since its last one (the tool went and came back).
+    std::atomic<std::uint64_t> losses{0};         // local -> global
+    std::uint64_t published_losses = 0;           // global's own: `losses` at its last hand-over
     std::vector<Contact> contacts;                // local -> game, under results_mutex_
     // Constrained tools (docs/coupling.md): `pose` is the device's, the
     // proxy is local tracking's and reaches the haptic loop in the snapshot.
