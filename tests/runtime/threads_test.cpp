@@ -207,6 +207,32 @@ TEST_F(ThreadsTest, ApproachAndRestAgreeWithTheDeterministicStep) {
   EXPECT_EQ(contacts.size(), expected_.lmds.size());
 }
 
+// Every thread at 4 Hz sleeps a quarter of a second between iterations:
+// stopping wakes them rather than waiting for the end of the period, and
+// the haptic loop fades the force out in ticks of a millisecond, not in its
+// own (each of which the gate would let take only 5 ms of the fade).
+TEST_F(ThreadsTest, StoppingASlowLoopWaitsNeitherForItsPeriodNorForASlowFade) {
+  settings_.haptic_rate = settings_.local_rate = settings_.global_rate = 4.0;
+  settings_.stale_after = 2.0;  // a snapshot a quarter of a second old is fresh here
+  // The gate's rate: the whole force in four steps of 5 ms, so its fade
+  // takes several steps.
+  const double force = length(expected_wrench_.force);
+  settings_.max_force_rate = force / (4 * 0.005);
+  scripted_ = std::make_unique<ScriptedDevice>(std::vector<ScriptedPose>{ScriptedPose::of(near_)}, 1.0, false);
+  world_->set_device(tool_, scripted_->device());
+  Status status;
+  ASSERT_TRUE(world_->start_threads(settings_, status)) << status.message();
+  // Seen within milliseconds of the tick that wrote it: the haptic thread is
+  // asleep for about a quarter of a second more.
+  ASSERT_TRUE(wait_until([&] { return length(scripted_->record().last_force) > 0.6 * force; }, 10.0));
+  const auto before = Clock::now();
+  world_->stop_threads();
+  const double seconds = std::chrono::duration<double>(Clock::now() - before).count();
+  EXPECT_LT(seconds, 0.1) << "stopping waited for the period or faded in its ticks";
+  EXPECT_EQ(length(scripted_->record().last_force), 0.0) << "stopping dropped the force rather than fading it";
+  expect_safe_output();
+}
+
 TEST_F(ThreadsTest, StalledTrackerFadesOutAndRecovers) {
   FaultyDevice* device = nullptr;
   start_and_settle(device);

@@ -4,6 +4,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -14,8 +15,11 @@
 #if defined(__linux__)
 #include <pthread.h>
 #include <sched.h>
+#include <linux/futex.h>
 #include <sys/mman.h>
+#include <sys/syscall.h>
 #include <time.h>
+#include <unistd.h>
 #endif
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
@@ -185,6 +189,7 @@ bool Threads::start(Status& status) {
   loop_stats_[int(Role::Local)].reset(s.local_rate);
   loop_stats_[int(Role::Global)].reset(s.global_rate);
   stop_.store(false);
+  wake_.store(0);
   for (int r = 0; r < 3; ++r) priority_[r].store(0), priority_error_[r].store(0);
   try {
     threads_[int(Role::Global)] = std::thread([this] { global_main(); });
@@ -216,6 +221,10 @@ void Threads::stop() {
   if (!started_) return;
   for (auto& s : stalled_) s.store(false);
   stop_.store(true);
+  wake_.store(1);
+#if defined(__linux__)
+  syscall(SYS_futex, reinterpret_cast<int*>(&wake_), FUTEX_WAKE_PRIVATE, INT_MAX, nullptr, nullptr, 0);
+#endif
   for (std::thread& t : threads_)
     if (t.joinable()) t.join();
   started_ = false;
@@ -278,30 +287,41 @@ ThreadGrant Threads::grant(Role role) const {
           priority_error_[r].load(std::memory_order_relaxed)};
 }
 
-void Threads::wait_until(Role role, double deadline) const {
-  const bool spin = role == Role::Haptic && timing_.load(std::memory_order_relaxed) == HapticTiming::Spin;
-  const double wake = spin ? deadline - settings_.spin_margin : deadline;
+void Threads::sleep_until(double deadline) const {
 #if defined(__linux__)
-  // An absolute sleep on CLOCK_MONOTONIC (steady_clock's), so neither a
-  // late wake-up nor a signal makes the loop drift.
+  // An absolute wait on CLOCK_MONOTONIC (steady_clock's), so neither a late
+  // wake-up nor a signal makes the loop drift; on the futex of wake_, which
+  // stop() sets and wakes.
+  static_assert(sizeof(std::atomic<int>) == sizeof(int) && std::atomic<int>::is_always_lock_free);
   const auto at = epoch_.time_since_epoch() +
-                  std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wake));
+                  std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(deadline));
   const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(at).count();
-  timespec ts{static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
-  while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) == EINTR) {
+  const timespec ts{static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
+  int* word = reinterpret_cast<int*>(const_cast<std::atomic<int>*>(&wake_));
+  // 0: woken, or a spurious wake-up (wait again); ETIMEDOUT: the deadline;
+  // EAGAIN: wake_ was already 1; EINTR: a signal.
+  while (wake_.load(std::memory_order_relaxed) == 0) {
+    const long r = syscall(SYS_futex, word, FUTEX_WAIT_BITSET_PRIVATE, 0, &ts, nullptr, FUTEX_BITSET_MATCH_ANY);
+    if (r != 0 && errno != EINTR) break;
   }
 #else
+  if (stop_.load(std::memory_order_relaxed)) return;
   std::this_thread::sleep_until(
-      epoch_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wake)));
+      epoch_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(deadline)));
 #endif
+}
+
+void Threads::wait_until(Role role, double deadline) const {
+  const bool spin = role == Role::Haptic && timing_.load(std::memory_order_relaxed) == HapticTiming::Spin;
+  sleep_until(spin ? deadline - settings_.spin_margin : deadline);
   if (spin)
-    while (now() < deadline) cpu_relax();
+    while (now() < deadline && !stop_.load(std::memory_order_relaxed)) cpu_relax();
 }
 
 bool Threads::wait_while_stalled(Role role) {
   if (!stalled_[int(role)].load(std::memory_order_relaxed)) return false;
   while (stalled_[int(role)].load(std::memory_order_relaxed) && !stop_.load(std::memory_order_relaxed))
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    sleep_until(now() + 1e-3);
   return true;
 }
 
@@ -337,11 +357,14 @@ void Threads::haptic_main() {
     pace(Role::Haptic, period, start, previous, deadline);
   }
   // Stopping must not drop the force at once: fade every device out at the
-  // gate's rates first (a few milliseconds at the defaults).
+  // gate's rates first (a few milliseconds at the defaults), in ticks of at
+  // most a millisecond, so a slow loop does not make the fade slow too (the
+  // gate takes at most kMaxStep of a longer tick).
+  const double fade_tick = std::min(period, 1e-3);
   for (int tick = 0; tick < 10000; ++tick) {
     bool zero = true;
     for (auto& tool : tools_) {
-      const Wrench w = tool->filter.step(Wrench{}, false, period);
+      const Wrench w = tool->filter.step(Wrench{}, false, fade_tick);
       if (tool->device.write_wrench) {
         const DeviceWrench out = device_wrench(w, true, kNoContact, world_.settings_);
         tool->device.write_wrench(tool->device.user, &out);
@@ -350,7 +373,7 @@ void Threads::haptic_main() {
       zero = zero && glm::length(w.force) == 0.0 && glm::length(w.torque) == 0.0;
     }
     if (zero) break;
-    std::this_thread::sleep_for(std::chrono::duration<double>(period));
+    std::this_thread::sleep_for(std::chrono::duration<double>(fade_tick));
   }
 }
 
@@ -626,7 +649,7 @@ void Threads::global_main() {
     }
     pace(Role::Global, period, start, previous, deadline);
     // Nothing moved: nothing new to find. Idle a millisecond rather than spin.
-    if (period == 0.0 && stats.pairs_searched == 0) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (period == 0.0 && stats.pairs_searched == 0) sleep_until(now() + 1e-3);
   }
 }
 

@@ -208,8 +208,11 @@ class Threads {
   // Pins the calling thread and raises its priority as the settings ask.
   void configure(Role role);
   // Waits for `deadline` (s since epoch_): by an absolute sleep, or a sleep
-  // and a spin for the haptic thread in Spin mode.
+  // and a spin for the haptic thread in Spin mode. Returns at once when the
+  // threads are being stopped.
   void wait_until(Role role, double deadline) const;
+  // Sleeps until `deadline`, or until stop() wakes the sleepers.
+  void sleep_until(double deadline) const;
   double now() const;
 
   World& world_;
@@ -217,6 +220,9 @@ class Threads {
   std::vector<std::unique_ptr<Tool>> tools_;
   std::vector<int> tool_of_body_;  // body slot -> index in tools_, or -1
   std::atomic<bool> stop_{false};
+  // 1 from stop() on: the word the threads sleep on (a futex on Linux), so
+  // stopping does not wait for the end of a period (a second at 1 Hz).
+  std::atomic<int> wake_{0};
   std::atomic<bool> stalled_[3] = {};
   std::atomic<int> pinned_[3] = {};
   std::atomic<int> priority_[3] = {}, priority_error_[3] = {};
