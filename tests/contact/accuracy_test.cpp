@@ -256,5 +256,42 @@ TEST(Accuracy, LocalTrackingFollowsASmallMotion) {
   EXPECT_GE(precision, 0.995);
 }
 
+// The cache is emptied by a new stamp per update, not by clearing it; at
+// the stamps' wrap-around it is cleared for real. Either way no update sees
+// an earlier one's results: the same updates give the same answer as a
+// tracker whose stamps are far from wrapping.
+TEST(Accuracy, LocalTrackingCacheForgetsEveryEarlierUpdateAcrossItsStampWrap) {
+  const auto model = bunny();
+  ASSERT_TRUE(model);
+  std::mt19937_64 rng(5);
+  PairState state;
+  LocalTracker fresh, wrapping;
+  wrapping.set_stamp_for_testing(0xFFFFFFFEu);  // the updates below use ...FF, then 1, 2, ...
+  for (int i = 0; i < 6; ++i) {
+    const Pose pose = pose_at_gap(*model, *model, 0.0005 + random_gap(rng), rng);
+    ProximityResult start;
+    find_lmds(unmerged(make_query(*model, Pose{}, *model, pose, kCutoff)), Method::Precise, state, start);
+    ASSERT_FALSE(start.lmds.empty());
+    // Tracked a little way on, and back: the second update revisits the
+    // first one's triangle pairs at other poses.
+    const Pose moved{pose.rotation, pose.translation + Vec3(2e-5, -1e-5, 1e-5)};
+    for (const Pose& at : {moved, pose}) {
+      const PairQuery q = unmerged(make_query(*model, Pose{}, *model, at, kCutoff));
+      std::vector<LmdPair> a = start.lmds, b = start.lmds;
+      LocalTrackingStats sa, sb;
+      fresh.update(q, a, sa);
+      wrapping.update(q, b, sb);
+      ASSERT_EQ(a.size(), b.size()) << "pose " << i;
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        EXPECT_EQ(a[k].tri_a, b[k].tri_a);
+        EXPECT_EQ(a[k].tri_b, b[k].tri_b);
+        EXPECT_EQ(a[k].distance, b[k].distance);
+      }
+      EXPECT_EQ(sa.distance_evaluations, sb.distance_evaluations);
+      EXPECT_EQ(sa.cache_hits, sb.cache_hits);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace prox::testing

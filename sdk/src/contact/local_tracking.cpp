@@ -28,16 +28,17 @@ constexpr int kMaxSteps = 256;
 std::uint32_t LocalTracker::find(std::uint64_t key) const {
   const std::size_t mask = slots_.size() - 1;
   for (std::size_t i = mix(key) & mask;; i = (i + 1) & mask) {
-    if (slots_[i] == 0) return kMissing;
-    if (entries_[slots_[i] - 1].key == key) return slots_[i] - 1;
+    if (slots_[i] >> 32 != stamp_) return kMissing;
+    const auto index = static_cast<std::uint32_t>(slots_[i]) - 1;
+    if (entries_[index].key == key) return index;
   }
 }
 
 void LocalTracker::insert(std::uint64_t key, std::uint32_t index) {
   const std::size_t mask = slots_.size() - 1;
   std::size_t i = mix(key) & mask;
-  while (slots_[i] != 0) i = (i + 1) & mask;
-  slots_[i] = index + 1;
+  while (slots_[i] >> 32 == stamp_) i = (i + 1) & mask;
+  slots_[i] = std::uint64_t{stamp_} << 32 | (index + 1);
 }
 
 void LocalTracker::rehash(std::size_t slots) {
@@ -48,10 +49,15 @@ void LocalTracker::rehash(std::size_t slots) {
 void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalTrackingStats& stats,
                           bool known) {
   const auto start = std::chrono::steady_clock::now();
-  // The cache lives for one update (the poses change between updates).
+  // The cache lives for one update (the poses change between updates): a
+  // new stamp empties it. Stamp 0 is never live, so a table just assigned
+  // is empty; after 2^32 - 1 updates the stamps start over on a cleared one.
   entries_.clear();
-  if (slots_.empty()) slots_.assign(4096, 0u);
-  std::fill(slots_.begin(), slots_.end(), 0u);
+  if (slots_.empty()) slots_.assign(256, 0u);  // grows with the largest update
+  if (++stamp_ == 0) {
+    std::fill(slots_.begin(), slots_.end(), 0u);
+    stamp_ = 1;
+  }
   const Pose b_to_a = q.pose_a.inverse() * q.pose_b;
   const Mesh& ma = *q.mesh_a;
   const Mesh& mb = *q.mesh_b;

@@ -57,6 +57,10 @@ class LocalTracker {
   void update(const PairQuery& query, std::vector<LmdPair>& lmds, LocalTrackingStats& stats,
               bool known = false);
 
+  // Tests only: the stamp of the last update, to cross its wrap-around
+  // without 2^32 updates.
+  void set_stamp_for_testing(std::uint32_t stamp) { stamp_ = stamp; }
+
  private:
   // The cache: entries in the order computed (indices stay valid while the
   // vector grows), found through an open-addressing table of indices.
@@ -74,7 +78,11 @@ class LocalTracker {
   static constexpr std::uint32_t kMissing = 0xFFFFFFFFu;
   bool original_ = false;
   std::vector<Entry> entries_;
-  std::vector<std::uint32_t> slots_;  // entry index + 1; 0 is empty
+  // Entry index + 1 in the low 32 bits, the update's stamp in the high 32: a
+  // slot of an earlier update's stamp is empty, so a new update needs no
+  // clearing (the table keeps the size its largest update needed).
+  std::vector<std::uint64_t> slots_;
+  std::uint32_t stamp_ = 0;
   std::vector<std::uint32_t> around_a_, around_b_;
   std::vector<LmdPair> next_;
 };
