@@ -188,8 +188,7 @@ bool Threads::start(Status& status) {
   loop_stats_[int(Role::Haptic)].reset(s.haptic_rate);
   loop_stats_[int(Role::Local)].reset(s.local_rate);
   loop_stats_[int(Role::Global)].reset(s.global_rate);
-  stop_.store(false);
-  wake_.store(0);
+  stop_.store(0);
   for (int r = 0; r < 3; ++r) priority_[r].store(0), priority_error_[r].store(0);
   try {
     threads_[int(Role::Global)] = std::thread([this] { global_main(); });
@@ -197,7 +196,7 @@ bool Threads::start(Status& status) {
     threads_[int(Role::Haptic)] = std::thread([this] { haptic_main(); });
   } catch (const std::system_error& e) {
     // The system refused a thread: stop the ones already running.
-    stop_.store(true);
+    request_stop();
     for (std::thread& t : threads_)
       if (t.joinable()) t.join();
     status = Status(StatusCode::Unsupported, std::string("cannot start the runtime's threads: ") + e.what());
@@ -220,11 +219,7 @@ bool Threads::start(Status& status) {
 void Threads::stop() {
   if (!started_) return;
   for (auto& s : stalled_) s.store(false);
-  stop_.store(true);
-  wake_.store(1);
-#if defined(__linux__)
-  syscall(SYS_futex, reinterpret_cast<int*>(&wake_), FUTEX_WAKE_PRIVATE, INT_MAX, nullptr, nullptr, 0);
-#endif
+  request_stop();
   for (std::thread& t : threads_)
     if (t.joinable()) t.join();
   started_ = false;
@@ -287,20 +282,27 @@ ThreadGrant Threads::grant(Role role) const {
           priority_error_[r].load(std::memory_order_relaxed)};
 }
 
+void Threads::request_stop() {
+  stop_.store(1);
+#if defined(__linux__)
+  syscall(SYS_futex, reinterpret_cast<int*>(&stop_), FUTEX_WAKE_PRIVATE, INT_MAX, nullptr, nullptr, 0);
+#endif
+}
+
 void Threads::sleep_until(double deadline) const {
 #if defined(__linux__)
   // An absolute wait on CLOCK_MONOTONIC (steady_clock's), so neither a late
-  // wake-up nor a signal makes the loop drift; on the futex of wake_, which
-  // stop() sets and wakes.
+  // wake-up nor a signal makes the loop drift; on the futex of stop_, which
+  // request_stop() sets and wakes.
   static_assert(sizeof(std::atomic<int>) == sizeof(int) && std::atomic<int>::is_always_lock_free);
   const auto at = epoch_.time_since_epoch() +
                   std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(deadline));
   const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(at).count();
   const timespec ts{static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
-  int* word = reinterpret_cast<int*>(const_cast<std::atomic<int>*>(&wake_));
+  int* word = reinterpret_cast<int*>(const_cast<std::atomic<int>*>(&stop_));
   // 0: woken, or a spurious wake-up (wait again); ETIMEDOUT: the deadline;
-  // EAGAIN: wake_ was already 1; EINTR: a signal.
-  while (wake_.load(std::memory_order_relaxed) == 0) {
+  // EAGAIN: stop_ was already 1; EINTR: a signal.
+  while (stop_.load(std::memory_order_relaxed) == 0) {
     const long r = syscall(SYS_futex, word, FUTEX_WAIT_BITSET_PRIVATE, 0, &ts, nullptr, FUTEX_BITSET_MATCH_ANY);
     if (r != 0 && errno != EINTR) break;
   }

@@ -211,18 +211,20 @@ class Threads {
   // and a spin for the haptic thread in Spin mode. Returns at once when the
   // threads are being stopped.
   void wait_until(Role role, double deadline) const;
-  // Sleeps until `deadline`, or until stop() wakes the sleepers.
+  // Sleeps until `deadline`, or until request_stop() wakes the sleepers.
   void sleep_until(double deadline) const;
+  // Sets stop_ and wakes every thread sleeping on it.
+  void request_stop();
   double now() const;
 
   World& world_;
   ThreadSettings settings_;
   std::vector<std::unique_ptr<Tool>> tools_;
   std::vector<int> tool_of_body_;  // body slot -> index in tools_, or -1
-  std::atomic<bool> stop_{false};
-  // 1 from stop() on: the word the threads sleep on (a futex on Linux), so
-  // stopping does not wait for the end of a period (a second at 1 Hz).
-  std::atomic<int> wake_{0};
+  // 1 once the threads are to stop; also the word they sleep on (a futex on
+  // Linux), so stopping does not wait for the end of a period (a second at
+  // 1 Hz).
+  std::atomic<int> stop_{0};
   std::atomic<bool> stalled_[3] = {};
   std::atomic<int> pinned_[3] = {};
   std::atomic<int> priority_[3] = {}, priority_error_[3] = {};
