@@ -345,6 +345,10 @@ int lmd(Args& args);
 int polylines(Args& args);
 int path(Args& args);
 int run(Args& args);
+// The flight recorder for `run --trace` (trace.cpp): the capacity a run of
+// `seconds` needs, and its ticks written as CSV (how many).
+int trace_capacity_for(double seconds, double haptic_rate);
+std::size_t write_trace_csv(proxBodyId tool, int capacity, const std::string& path);
 int devices(Args& args);
 
 // HID devices for `run --device hid[:VVVV:PPPP]` (devices.cpp; only when

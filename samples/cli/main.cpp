@@ -11,7 +11,7 @@
 // are in the meshes' units (metres for the shared assets). docs/cli.md has
 // the details and the JSON layout.
 //
-//   proxima run [A B] [--device scripted|stream|hid[:VVVV:PPPP]] [--poses FILE] [--seconds S] ...
+//   proxima run [A B] [--device scripted|stream|hid[:VVVV:PPPP]] [--poses FILE] [--seconds S] [--trace FILE.csv] ...
 //   proxima devices [--json FILE]
 //
 // A customer of the SDK like any other: it sees only the C API
@@ -31,7 +31,8 @@ const char* kUsage =
     "  proxima path [A B] [--poses FILE | --steps N] [--method precise|original|both] [--force hard|soft]\n"
     "               [--csv FILE]\n"
     "  proxima run [A B] [--device scripted|stream|hid[:VVVV:PPPP]] [--poses FILE] [--seconds S] [--hold S]\n"
-    "              [--method precise|original] [--force hard|soft] [--json FILE]\n"
+    "              [--method precise|original] [--force hard|soft] [--tool-mode free|constrained]\n"
+    "              [--json FILE] [--trace FILE.csv]\n"
     "              [--stream-rate HZ] [--stream-mode hold|interpolate|extrapolate]\n"
     "              [--haptic-timing auto|spin|sleep] [--spin-margin S] [--realtime] [--lock-memory]\n"
     "  proxima devices [--json FILE]\n"

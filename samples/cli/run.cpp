@@ -156,7 +156,7 @@ struct ProxyWatch {
 // samples the results every 100 ms, as a renderer would.
 int run(Args& args) {
   std::string path_a = default_asset("bunny.obj"), path_b;
-  std::string poses_path, json_path, device_kind = "scripted";
+  std::string poses_path, json_path, trace_path, device_kind = "scripted";
   double seconds = 2.0, hold = 0.5, stream_rate = 90.0;
   proxStreamMode stream_mode = PROX_STREAM_INTERPOLATE;
   Settings settings = preset(PROX_FORCE_PRESET_HARD);
@@ -186,6 +186,8 @@ int run(Args& args) {
       poses_path = args.next("--poses file");
     } else if (opt == "--json") {
       json_path = args.next("--json file");
+    } else if (opt == "--trace") {
+      trace_path = args.next("--trace file");
     } else if (opt == "--device") {
       device_kind = args.next("--device value");
       if (device_kind != "scripted" && device_kind != "stream" && !is_hid_kind(device_kind))
@@ -286,6 +288,7 @@ int run(Args& args) {
   }
   check(proxBody_SetDevice(scene.b(), &device_def));
 
+  if (!trace_path.empty()) threads.traceCapacity = trace_capacity_for(seconds + hold, threads.hapticRate);
   check(proxWorld_StartThreads(scene.world(), &threads));
   // The engine's frame loop for the streamed device: the pose the path has
   // now, stamped now, once a frame (its own thread, as an engine's would be).
@@ -397,6 +400,10 @@ int run(Args& args) {
       static_cast<unsigned long long>(safety.limitedTicks),
       static_cast<unsigned long long>(safety.tornSnapshots));
 
+  if (!trace_path.empty()) {
+    const std::size_t ticks = write_trace_csv(scene.b(), threads.traceCapacity, trace_path);
+    std::printf("trace: %zu haptic ticks written to %s\n", ticks, trace_path.c_str());
+  }
   if (watch)
     std::printf(
         "proxy: closest %.6g m to the other body (safety distance %.6g m); the device went %.6g m "

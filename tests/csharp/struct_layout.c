@@ -42,6 +42,7 @@ int main(void) {
   SIZE(proxThreadsDef);
   SIZE(proxThreadStats);
   SIZE(proxSafetyStats);
+  SIZE(proxHapticSample);
   SIZE(proxMeshStats);
   SIZE(proxSearchStats);
   SIZE(proxTrackStats);
@@ -49,6 +50,11 @@ int main(void) {
   SIZE(proxPatchSettings);
   SIZE(proxPatchStats);
   OFFSET(proxForceSettings, maxForce);
+  OFFSET(proxThreadsDef, traceCapacity);
+  OFFSET(proxHapticSample, force);
+  OFFSET(proxHapticSample, flags);
+  OFFSET(proxHapticSample, closestDistance);
+  OFFSET(proxHapticSample, tick);
   OFFSET(proxWorldDef, cutoff);
   OFFSET(proxWorldDef, internalValue);
   OFFSET(proxMeshDef, indices);

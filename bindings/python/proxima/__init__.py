@@ -18,6 +18,7 @@ from ._devices import ScriptedDevice, StreamDevice, get_time
 from ._types import (ForceSettings, IntersectionStats, MeshInfo, MeshStats, PatchSettings, PatchStats, SafetyStats,
                      ScriptedDeviceRecord, SearchStats, StreamDeviceStats, ThreadStats, TrackStats, WorldStats,
                      contact_dtype)
+from ._trace import FLAGS as HAPTIC_FLAGS, has_flag, trace_dtype
 from ._world import Body, Mesh, World, distance, force_preset
 
 #: "major.minor.patch": the library's proxGetVersion(), checked at import
@@ -26,7 +27,7 @@ __version__ = version_string()
 
 __all__ = [
     "__version__", "World", "Mesh", "Body", "ScriptedDevice", "StreamDevice", "get_time", "distance",
-    "force_preset", "c_dtype", "StreamDeviceStats",
+    "force_preset", "c_dtype", "StreamDeviceStats", "trace_dtype", "has_flag", "HAPTIC_FLAGS",
     "contact_dtype", "ForceSettings", "MeshInfo", "MeshStats", "WorldStats", "SearchStats", "TrackStats",
     "IntersectionStats", "ThreadStats", "SafetyStats", "ScriptedDeviceRecord", "PatchSettings", "PatchStats",
     "Error", "InvalidArgument", "InvalidHandle", "InvalidMesh", "FileError", "ParseError", "Unsupported",

@@ -13,6 +13,7 @@ import numpy as np
 from . import _header
 from ._core import (CAPACITY, c_dtype, check, enum_value, ffi, fill_c, from_c, integer, invalid, lib,
                     pose_from_c, pose_to_c, poses_array, real, snake, vec3)
+from ._trace import haptic_trace
 from ._types import (PATCH_FIELDS, ForceSettings, IntersectionStats, MeshInfo, MeshStats, PatchSettings,
                      PatchStats, SafetyStats, SearchStats, ThreadStats, TrackStats, WorldStats, contact_dtype)
 
@@ -310,6 +311,7 @@ class World:
         d = ffi.new("proxThreadsDef*", lib.proxDefaultThreadsDef())
         _fill_settings(d, "proxThreadsDef", settings, "start_threads")
         check(lib.proxWorld_StartThreads(self._idp[0], d))
+        self._trace_capacity = d.traceCapacity  # Body.haptic_trace's default length
 
     def stop_threads(self):
         """Fades every device's force out, then stops the threads."""
@@ -567,6 +569,14 @@ class Body:
         check(lib.proxBody_GetWrench(self._idp[0], w))
         f, t = w.force, w.torque
         return np.array([f.x, f.y, f.z]), np.array([t.x, t.y, t.z]), bool(w.clipped)
+
+    def haptic_trace(self, max_samples=None):
+        """The flight recorder's newest ticks (start_threads(trace_capacity=N)),
+        oldest first: a structured array of proxima.trace_dtype(), by default
+        as many as the recorder keeps. Empty when it is off."""
+        if max_samples is None:
+            max_samples = getattr(self.world, "_trace_capacity", 0)
+        return haptic_trace(self._idp[0], max_samples)
 
     def intersections(self):
         """Where the tool's surface crosses other bodies at their current

@@ -121,3 +121,41 @@ def test_timing_settings_reach_the_haptic_loop(world, bunny):
         stats = world.thread_stats("haptic")
         assert stats.timing == timing and stats.memory_locked is False and stats.realtime_priority == 0
         assert stats.period_p50 <= stats.period_p999 <= stats.period_max
+
+
+def test_the_flight_recorder_keeps_what_the_device_was_handed(world, bunny):
+    world.create_body(bunny, "static")
+    tool = world.create_body(bunny, "tool", pose=((0.16, 0, 0), (1, 0, 0, 0)), reference_point=box_centre(bunny))
+    device = world.create_scripted_device(_approach(), seconds_per_pose=0.004, loop=False)
+    tool.set_device(device)
+    assert len(tool.haptic_trace()) == 0, "never started: nothing recorded"
+    world.start_threads(trace_capacity=4096)
+    try:
+        # Closed on the count: the path done and 300 ticks of holding.
+        assert _wait_for(lambda: device.record.progress >= 49)
+        held = device.record.writes
+        assert _wait_for(lambda: device.record.writes > held + 300)
+        running = tool.haptic_trace(64)
+        assert len(running) == 64
+        assert np.all(np.diff(running["tick"].astype(np.int64)) == 1)
+    finally:
+        world.stop_threads()
+    trace = tool.haptic_trace()
+    record = device.record
+    assert trace.dtype == proxima.trace_dtype()
+    assert len(trace) == record.writes, "every tick of the run, the fade-out included, in 4096"
+    assert np.all(np.diff(trace["tick"].astype(np.int64)) == 1) and trace["tick"][0] == 0
+    assert np.all(np.diff(trace["time"]) > 0)
+    # The device pose is the scripted path's: x from 0.1592 down to 0.1392.
+    x = trace["device_position"][:, 0]
+    assert x.max() <= 0.1592 + 1e-12 and x.min() == pytest.approx(0.1392, abs=1e-12)
+    np.testing.assert_allclose(np.linalg.norm(trace["device_rotation"], axis=1), 1.0, atol=1e-12)
+    magnitude = np.linalg.norm(trace["force"], axis=1)
+    assert magnitude.max() == pytest.approx(record.max_force, abs=1e-12)
+    step = np.abs(np.diff(trace["force"], axis=0)).max()
+    assert step <= record.max_force_step + 1e-12
+    assert magnitude[-1] == 0.0 and proxima.has_flag(trace, "stopping")[-1]
+    assert proxima.has_flag(trace, "faded")[-1]
+    assert trace["contact_count"][np.argmax(magnitude)] > 0
+    with pytest.raises(ValueError):
+        tool.haptic_trace(-1)

@@ -616,7 +616,10 @@ typedef struct proxThreadsDef {
    * never undone by Proxima; reported in proxThreadStats. Default 0. */
   proxBool lockMemory;
   int32_t internalValue;
-  int32_t reserved;
+  /* The flight recorder: keep each tool's last this many haptic ticks for
+   * proxBody_GetHapticTrace, in [0, 1048576] (192 bytes a tick, reserved
+   * when the threads start). 0 (the default): off. */
+  int32_t traceCapacity;
 } proxThreadsDef;
 
 PROX_API proxThreadsDef proxDefaultThreadsDef(void);
@@ -674,6 +677,40 @@ typedef struct proxSafetyStats {
 
 /* Game thread. */
 PROX_API proxResult proxWorld_GetSafetyStats(proxWorldId world, proxSafetyStats* stats);
+
+/* ---- the flight recorder -----------------------------------------------------
+ * What the haptic loop rendered, tick by tick (docs/haptic-fidelity.md): what
+ * "it buzzes" is debugged with. Recorded on the haptic thread without a lock,
+ * an allocation or a system call, when proxThreadsDef.traceCapacity > 0. */
+
+typedef enum proxHapticFlag {
+  PROX_HAPTIC_CLIPPED = 1,    /* the safety gate changed the wrench (the clip or the rate limit) */
+  PROX_HAPTIC_STALE = 2,      /* the contacts were older than staleAfter */
+  PROX_HAPTIC_UNTRUSTED = 4,  /* the tool was farther than trustDistance from where they were tracked */
+  PROX_HAPTIC_FADED = 8,      /* no contacts rendered this tick: the gate faded the force towards zero */
+  PROX_HAPTIC_NO_POSE = 16,   /* the device gave no valid pose (devicePose: the last valid one) */
+  PROX_HAPTIC_STOPPING = 32,  /* a tick of the fade-out after proxWorld_StopThreads */
+  PROX_HAPTIC_FLAG_FORCE32 = 0x7FFFFFFF
+} proxHapticFlag;
+
+typedef struct proxHapticSample {
+  double time;          /* s since the threads started */
+  proxPose devicePose;  /* the device's pose this tick (the game's, for a tool no device holds) */
+  proxPose proxyPose;   /* the pose the force was rendered against: a constrained tool's proxy, else devicePose */
+  proxVec3 force;       /* N, what the device was handed (after the safety gate) */
+  proxVec3 torque;      /* N m */
+  int32_t contactCount; /* contacts rendered this tick (0 when faded) */
+  uint32_t flags;       /* proxHapticFlag bits */
+  double closestDistance; /* m: the closest contact's distance told to the device; +infinity: none */
+  uint64_t tick;        /* the tool's haptic ticks before this one: consecutive samples differ by 1 */
+} proxHapticSample;
+
+/* Copies the tool's newest recorded ticks, at most `capacity`, oldest first,
+ * into `samples` and sets *count to how many it copied (0 when the recorder
+ * is off or the threads never ran). While the threads run, from the running
+ * loop; after a stop, the last run's, the fade-out included. Game thread. */
+PROX_API proxResult proxBody_GetHapticTrace(proxBodyId tool, proxHapticSample* samples, int32_t capacity,
+                                            int32_t* count);
 
 /* ---- inspection ------------------------------------------------------------
  * What the proxima command-line tool and the benchmarks report: the force

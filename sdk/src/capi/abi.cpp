@@ -22,6 +22,7 @@ static_assert(sizeof(proxScriptedDeviceId) == 16, "ABI");
 static_assert(sizeof(proxScriptedDeviceDef) == 32, "ABI");
 static_assert(sizeof(proxScriptedDeviceRecord) == 104, "ABI");
 static_assert(sizeof(proxThreadsDef) == 104, "ABI");
+static_assert(sizeof(proxHapticSample) == 192, "ABI");
 static_assert(sizeof(proxThreadStats) == 120, "ABI");
 static_assert(sizeof(proxSafetyStats) == 48, "ABI");
 static_assert(sizeof(proxResult) == 4 && sizeof(proxMethod) == 4 && sizeof(proxBodyType) == 4 &&

@@ -30,6 +30,7 @@ proxThreadsDef proxDefaultThreadsDef(void) {
   d.localPriority = s.realtime_priority[1];
   d.lockMemory = s.lock_memory ? 1 : 0;
   d.internalValue = kDefCookie;
+  d.traceCapacity = s.trace_capacity;
   return d;
 }
 
@@ -68,6 +69,7 @@ proxResult proxWorld_StartThreads(proxWorldId world, const proxThreadsDef* def) 
     s.realtime_priority[0] = def->hapticPriority;
     s.realtime_priority[1] = def->localPriority;
     s.lock_memory = def->lockMemory != 0;
+    s.trace_capacity = def->traceCapacity;
     Status status;
     if (!w.start_threads(s, status)) {
       if (status.code() == StatusCode::InvalidArgument)
@@ -128,6 +130,39 @@ proxResult proxWorld_GetSafetyStats(proxWorldId world, proxSafetyStats* stats) {
     const runtime::HapticCounters c = w.threads()->haptic_counters();
     *stats = {c.invalid_poses, c.stale_ticks,    c.untrusted_ticks,
               c.limited_ticks, c.torn_snapshots, c.dropped_contacts};
+  });
+}
+
+proxResult proxBody_GetHapticTrace(proxBodyId tool, proxHapticSample* samples, int32_t capacity,
+                                   int32_t* count) {
+  return guard("proxBody_GetHapticTrace", [&] {
+    need(count, "count");
+    *count = 0;
+    if (capacity < 0) fail(PROX_ERROR_INVALID_ARGUMENT, "capacity is negative");
+    if (capacity > 0) need(samples, "samples");
+    runtime::World* w = nullptr;
+    const runtime::Handle h = tool_of(tool, w);
+    const runtime::Threads* t = w->threads();
+    if (!t || capacity == 0) return;
+    // The ring's samples hold the C struct's contents in another layout.
+    static_assert(sizeof(runtime::TraceSample) == sizeof(proxHapticSample));
+    std::vector<runtime::TraceSample> buffer(static_cast<std::size_t>(capacity));
+    const std::size_t n = t->trace(h.index, buffer.data(), buffer.size());
+    auto pose = [](const double* p) { return proxPose{{p[0], p[1], p[2]}, {p[3], p[4], p[5], p[6]}}; };
+    for (std::size_t i = 0; i < n; ++i) {
+      const runtime::TraceSample& s = buffer[i];
+      proxHapticSample& out = samples[i];
+      out.time = s.time;
+      out.devicePose = pose(s.device);
+      out.proxyPose = pose(s.proxy);
+      out.force = {s.force[0], s.force[1], s.force[2]};
+      out.torque = {s.torque[0], s.torque[1], s.torque[2]};
+      out.contactCount = static_cast<int32_t>(s.contacts);
+      out.flags = s.flags;
+      out.closestDistance = s.closest;
+      out.tick = s.tick;
+    }
+    *count = static_cast<int32_t>(n);
   });
 }
 

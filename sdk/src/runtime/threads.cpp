@@ -4,31 +4,25 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <cstring>
 #include <string>
 #include <system_error>
 
-#include <cerrno>
-
-#if defined(__linux__)
-#include <pthread.h>
-#include <sched.h>
-#include <linux/futex.h>
-#include <sys/mman.h>
-#include <sys/syscall.h>
-#include <time.h>
-#include <unistd.h>
-#endif
-#if defined(__x86_64__) || defined(__i386__)
-#include <immintrin.h>
-#endif
+#include "runtime/platform.h"
 
 namespace prox::runtime {
 namespace {
 
 constexpr int kMaxContactsPerTool = 1 << 20;  // ThreadSettings::max_contacts
+constexpr int kMaxTraceCapacity = 1 << 20;    // ThreadSettings::trace_capacity: 17 min at 1 kHz, 192 MiB
+
+// x y z, then the rotation as a quaternion w x y z.
+void pose_words(const Pose& pose, double out[7]) {
+  const glm::dquat q = glm::quat_cast(pose.rotation);
+  const double w[7] = {pose.translation.x, pose.translation.y, pose.translation.z, q.w, q.x, q.y, q.z};
+  std::copy(w, w + 7, out);
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -67,29 +61,9 @@ void count(std::atomic<std::uint64_t>& counter, std::uint64_t n = 1) {
   counter.fetch_add(n, std::memory_order_relaxed);
 }
 
-// A hint to the core that this is a spin-wait (it saves power and frees the
-// sibling hyper-thread).
-inline void cpu_relax() {
-#if defined(__x86_64__) || defined(__i386__)
-  _mm_pause();
-#elif defined(__aarch64__)
-  asm volatile("yield");
-#endif
-}
-
 }  // namespace
 
-void default_cores(int cores[3]) {
-  cores[0] = cores[1] = cores[2] = -1;
-#if defined(__linux__)
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  if (sched_getaffinity(0, sizeof set, &set) != 0 || CPU_COUNT(&set) < 4) return;
-  int found = 0;
-  for (int c = CPU_SETSIZE - 1; c >= 0 && found < 2; --c)
-    if (CPU_ISSET(c, &set)) cores[found++] = c;  // haptic on the last allowed core, local on the one before
-#endif
-}
+void default_cores(int cores[3]) { platform::default_cores(cores); }
 
 Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), settings_(settings) {
   epoch_ = Clock::now();
@@ -123,6 +97,9 @@ Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), 
     for (int k = 0; k < 3; ++k)
       tool->snapshots.buffer(k).contacts.reserve(
           static_cast<std::size_t>(std::clamp(settings_.max_contacts, 1, kMaxContactsPerTool)));
+    if (settings_.trace_capacity > 0)
+      tool->trace = std::make_unique<TraceRing<TraceSample>>(
+          static_cast<std::size_t>(std::min(settings_.trace_capacity, kMaxTraceCapacity)));
     tool->filter = SafetyFilter({world.settings_.force.max_force, world.settings_.force.max_torque,
                                  settings_.max_force_rate, settings_.max_torque_rate});
     tool_of_body_[i] = static_cast<int>(tools_.size());
@@ -159,6 +136,8 @@ bool Threads::check(const ThreadSettings& s, Status& status) {
   if (s.max_contacts < 1 || s.max_contacts > kMaxContactsPerTool)
     return bad("maximum contacts per tool must be in [1, 1048576] (it is " + std::to_string(s.max_contacts) +
                ")");
+  if (s.trace_capacity < 0 || s.trace_capacity > kMaxTraceCapacity)
+    return bad("trace capacity must be in [0, 1048576] ticks (it is " + std::to_string(s.trace_capacity) + ")");
   const double haptic_period = 1.0 / s.haptic_rate;
   if (s.haptic_timing != HapticTiming::Auto && s.haptic_timing != HapticTiming::Sleep &&
       s.haptic_timing != HapticTiming::Spin)
@@ -204,14 +183,10 @@ bool Threads::start(Status& status) {
   }
   started_ = true;
   if (s.lock_memory) {
-#if defined(__linux__)
     // Now, with the threads' stacks and the snapshots' storage mapped.
-    const bool locked = mlockall(MCL_CURRENT) == 0;
-    memory_locked_.store(locked);
-    memory_lock_error_.store(locked ? 0 : errno);
-#else
-    memory_lock_error_.store(ENOSYS);
-#endif
+    const int error = platform::lock_process_memory();
+    memory_locked_.store(error == 0);
+    memory_lock_error_.store(error);
   }
   return true;
 }
@@ -231,24 +206,12 @@ void Threads::configure(Role role) {
   const int r = int(role);
   const int core = settings_.cores[r];
   const int priority = role == Role::Global ? 0 : settings_.realtime_priority[r];
-#if defined(__linux__)
-  if (core >= 0) {
-    cpu_set_t set;
-    CPU_ZERO(&set);
-    CPU_SET(core, &set);
-    if (pthread_setaffinity_np(pthread_self(), sizeof set, &set) == 0) pinned_[r].store(core);
-  }
+  if (core >= 0 && platform::pin_current_thread(core)) pinned_[r].store(core);
   if (priority > 0) {
-    sched_param param{};
-    param.sched_priority = priority;
-    const int error = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param);
+    const int error = platform::set_current_thread_realtime(priority);
     priority_[r].store(error == 0 ? priority : 0);
     priority_error_[r].store(error);
   }
-#else
-  (void)core;
-  if (priority > 0) priority_error_[r].store(ENOSYS);
-#endif
   if (role == Role::Haptic) {
     HapticTiming timing = settings_.haptic_timing;
     if (timing == HapticTiming::Auto) {
@@ -262,18 +225,7 @@ void Threads::configure(Role role) {
 }
 
 double Threads::cpu_seconds(Role role) const {
-#if defined(__linux__)
-  std::thread& t = const_cast<std::thread&>(threads_[int(role)]);
-  clockid_t clock;
-  timespec ts{};
-  if (!t.joinable() || pthread_getcpuclockid(t.native_handle(), &clock) != 0 ||
-      clock_gettime(clock, &ts) != 0)
-    return -1.0;
-  return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
-#else
-  (void)role;
-  return -1.0;
-#endif
+  return platform::thread_cpu_seconds(const_cast<std::thread&>(threads_[int(role)]));
 }
 
 ThreadGrant Threads::grant(Role role) const {
@@ -284,40 +236,19 @@ ThreadGrant Threads::grant(Role role) const {
 
 void Threads::request_stop() {
   stop_.store(1);
-#if defined(__linux__)
-  syscall(SYS_futex, reinterpret_cast<int*>(&stop_), FUTEX_WAKE_PRIVATE, INT_MAX, nullptr, nullptr, 0);
-#endif
+  platform::wake_all(stop_);
 }
 
 void Threads::sleep_until(double deadline) const {
-#if defined(__linux__)
-  // An absolute wait on CLOCK_MONOTONIC (steady_clock's), so neither a late
-  // wake-up nor a signal makes the loop drift; on the futex of stop_, which
-  // request_stop() sets and wakes.
-  static_assert(sizeof(std::atomic<int>) == sizeof(int) && std::atomic<int>::is_always_lock_free);
-  const auto at = epoch_.time_since_epoch() +
-                  std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(deadline));
-  const auto ns = std::chrono::duration_cast<std::chrono::nanoseconds>(at).count();
-  const timespec ts{static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
-  int* word = reinterpret_cast<int*>(const_cast<std::atomic<int>*>(&stop_));
-  // 0: woken, or a spurious wake-up (wait again); ETIMEDOUT: the deadline;
-  // EAGAIN: stop_ was already 1; EINTR: a signal.
-  while (stop_.load(std::memory_order_relaxed) == 0) {
-    const long r = syscall(SYS_futex, word, FUTEX_WAIT_BITSET_PRIVATE, 0, &ts, nullptr, FUTEX_BITSET_MATCH_ANY);
-    if (r != 0 && errno != EINTR) break;
-  }
-#else
-  if (stop_.load(std::memory_order_relaxed)) return;
-  std::this_thread::sleep_until(
-      epoch_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(deadline)));
-#endif
+  platform::sleep_until(stop_, epoch_ + std::chrono::duration_cast<Clock::duration>(
+                                            std::chrono::duration<double>(deadline)));
 }
 
 void Threads::wait_until(Role role, double deadline) const {
   const bool spin = role == Role::Haptic && timing_.load(std::memory_order_relaxed) == HapticTiming::Spin;
   sleep_until(spin ? deadline - settings_.spin_margin : deadline);
   if (spin)
-    while (now() < deadline && !stop_.load(std::memory_order_relaxed)) cpu_relax();
+    while (now() < deadline && !stop_.load(std::memory_order_relaxed)) platform::cpu_relax();
 }
 
 bool Threads::wait_while_stalled(Role role) {
@@ -372,6 +303,10 @@ void Threads::haptic_main() {
         tool->device.write_wrench(tool->device.user, &out);
       }
       tool->wrench.store({w});
+      if (tool->trace) {
+        const Pose device = tool->pose.load().pose;
+        record(*tool, now(), device, device, w, kNoContact, 0, kTraceFaded | kTraceStopping);
+      }
       zero = zero && glm::length(w.force) == 0.0 && glm::length(w.torque) == 0.0;
     }
     if (zero) break;
@@ -394,19 +329,20 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
   } else {
     count(invalid_poses_);
   }
+  std::uint32_t flags = ok ? 0u : kTraceNoPose;
 
   tool.snapshots.update();
   const ContactSnapshot& snapshot = tool.snapshots.front();
   bool valid = ok && snapshot.sequence > 0;
   if (valid && snapshot_checksum(snapshot) != snapshot.checksum) count(torn_snapshots_), valid = false;
-  if (valid && t - snapshot.time > settings_.stale_after) count(stale_ticks_), valid = false;
+  if (valid && t - snapshot.time > settings_.stale_after) count(stale_ticks_), valid = false, flags |= kTraceStale;
   // A constrained tool's device is meant to be away from its proxy: the
   // coupling's spring is what tells the hand, so only a free tool's
   // contacts can be left behind by it.
   if (valid && !tool.constrained &&
       pose_displacement(snapshot.tool_pose, sample.pose, tool.reference_local, tool.radius) >
           settings_.trust_distance)
-    count(untrusted_ticks_), valid = false;
+    count(untrusted_ticks_), valid = false, flags |= kTraceUntrusted;
   Wrench target;
   // A tick whose contacts are not trusted (stale, left behind, no pose this
   // tick) tells the device the last trusted distance: a stall of the
@@ -435,6 +371,28 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
     tool.device.write_wrench(tool.device.user, &out);
   }
   tool.wrench.store({w});
+  if (tool.trace) {
+    if (limited) flags |= kTraceClipped;
+    if (!valid) flags |= kTraceFaded;
+    const Pose proxy = tool.constrained && snapshot.sequence > 0 ? snapshot.tool_pose : tool.pose.load().pose;
+    record(tool, t, ok ? sample.pose : tool.pose.load().pose, proxy, w, closest,
+           valid ? static_cast<std::uint32_t>(snapshot.contacts.size()) : 0u, flags);
+  }
+}
+
+void Threads::record(Tool& tool, double t, const Pose& device, const Pose& proxy, const Wrench& w,
+                     double closest, std::uint32_t contacts, std::uint32_t flags) {
+  TraceSample s;
+  s.tick = tool.ticks++;
+  s.time = t;
+  pose_words(device, s.device);
+  pose_words(proxy, s.proxy);
+  s.force[0] = w.force.x, s.force[1] = w.force.y, s.force[2] = w.force.z;
+  s.torque[0] = w.torque.x, s.torque[1] = w.torque.y, s.torque[2] = w.torque.z;
+  s.closest = closest;
+  s.contacts = contacts;
+  s.flags = flags;
+  tool.trace->push(s);
 }
 
 // ---- local tracking ----------------------------------------------------------------
@@ -681,6 +639,12 @@ void Threads::contacts(std::uint32_t body, std::vector<Contact>& out) const {
   const int k = tool_of_body_[body];
   std::lock_guard<std::mutex> lock(results_mutex_);
   out = tools_[std::size_t(k)]->contacts;
+}
+
+std::size_t Threads::trace(std::uint32_t body, TraceSample* out, std::size_t max) const {
+  const int k = tool_of_body_[body];
+  if (k < 0 || !tools_[std::size_t(k)]->trace) return 0;
+  return tools_[std::size_t(k)]->trace->copy_newest(out, max);
 }
 
 StepStats Threads::step_stats() const {

@@ -18,6 +18,7 @@
 #pragma once
 
 #include "runtime/handoff.h"
+#include "runtime/haptic_trace.h"
 #include "runtime/haptic.h"
 #include "runtime/loop_stats.h"
 #include "runtime/world.h"
@@ -64,6 +65,9 @@ struct ThreadSettings {
   // mlockall(MCL_CURRENT) once the threads run, so no page the haptic loop
   // touches can be paged out (process-wide; reported, never fatal).
   bool lock_memory = false;
+  // The flight recorder: the last this many haptic ticks of each tool
+  // (haptic_trace.h), reserved when the threads are made; 0: off.
+  int trace_capacity = 0;
 };
 
 // Cores for the haptic and local threads on a machine with at least four
@@ -115,7 +119,9 @@ class Threads {
   void contacts(std::uint32_t body, std::vector<Contact>& out) const;
   StepStats step_stats() const;
 
-  // Any thread.
+  // Any thread. The tool's newest recorded ticks, at most `max`, oldest
+  // first; 0 when the recorder is off.
+  std::size_t trace(std::uint32_t body, TraceSample* out, std::size_t max) const;
   LoopSummary loop_summary(Role role) const { return loop_stats_[int(role)].summary(); }
   HapticCounters haptic_counters() const;
   int pinned_core(Role role) const { return pinned_[int(role)].load(std::memory_order_relaxed); }
@@ -192,12 +198,17 @@ class Threads {
     std::vector<coupling::Obstacle> obstacles;  // local's own
     coupling::OffsetRate offset_rate;           // haptic's own
     double closest = kNoContact;                // haptic's own: the last trusted tick's, for the device
+    std::unique_ptr<TraceRing<TraceSample>> trace;  // haptic -> any; null when the recorder is off
+    std::uint64_t ticks = 0;                        // haptic's own
   };
 
   void haptic_main();
   void local_main();
   void global_main();
   void haptic_tick(Tool& tool, double now, double dt);
+  // Records a tick in the tool's flight recorder, if it has one.
+  void record(Tool& tool, double now, const Pose& device, const Pose& proxy, const Wrench& w, double closest,
+              std::uint32_t contacts, std::uint32_t flags);
   void track(Tool& tool, std::vector<const LmdPair*>& scratch);
   // A constrained tool's proxy towards the device, on the local thread.
   void move_proxy(Tool& tool, const PoseSample& device);

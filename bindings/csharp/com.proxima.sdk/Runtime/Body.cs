@@ -35,6 +35,24 @@ namespace Proxima
             Device.Release(id);
         }
 
+        /// <summary>The flight recorder's newest ticks (ThreadSettings.TraceCapacity), at most
+        /// buffer.Length, oldest first, into the caller's buffer; returns how many. Game thread.</summary>
+        public int GetHapticTrace(HapticSample[] buffer)
+        {
+            if (buffer == null) throw new ArgumentNullException(nameof(buffer));
+            Native.Check(Native.proxBody_GetHapticTrace(id, buffer, buffer.Length, out int count));
+            return count;
+        }
+
+        /// <summary>The flight recorder's newest ticks, at most maxSamples, in a new array.</summary>
+        public HapticSample[] GetHapticTrace(int maxSamples)
+        {
+            var buffer = new HapticSample[maxSamples];
+            int n = GetHapticTrace(buffer);
+            if (n < buffer.Length) Array.Resize(ref buffer, n);
+            return buffer;
+        }
+
         /// <summary>The tool's contacts after the last step (while the threads run: local
         /// tracking's latest), in a new array.</summary>
         public Contact[] GetContacts() => GetContacts(out ContactPatch[] _);

@@ -190,6 +190,8 @@ namespace Proxima
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxBody_GetWrench(BodyId tool, out Wrench wrench);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxBody_GetHapticTrace(BodyId tool, [Out] HapticSample[] samples, int capacity, out int count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxBody_GetIntersections(BodyId tool, IntPtr points, int pointCapacity,
                                                                 out int pointCount, IntPtr lines, int lineCapacity,
                                                                 out int lineCount);

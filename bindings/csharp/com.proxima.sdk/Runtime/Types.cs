@@ -239,6 +239,34 @@ namespace Proxima
         public Bool32 Clipped;
     }
 
+    /// <summary>proxHapticFlag: why a recorded tick rendered what it did.</summary>
+    [Flags]
+    public enum HapticFlags : uint
+    {
+        None = 0,
+        Clipped = 1,    // the safety gate changed the wrench (clip or rate limit)
+        Stale = 2,      // the contacts were older than StaleAfter
+        Untrusted = 4,  // the tool was farther than TrustDistance from where they were tracked
+        Faded = 8,      // no contacts rendered: the gate faded the force towards zero
+        NoPose = 16,    // the device gave no valid pose
+        Stopping = 32,  // the fade-out after StopThreads
+    }
+
+    /// <summary>proxHapticSample: one tick of the flight recorder (ThreadSettings.TraceCapacity).</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct HapticSample
+    {
+        public double Time;       // s since the threads started
+        public Pose DevicePose;   // the device's (or the game's) pose this tick
+        public Pose ProxyPose;    // what the force was rendered against: a constrained tool's proxy
+        public Vec3 Force;        // N, what the device was handed
+        public Vec3 Torque;       // N m
+        public int ContactCount;  // contacts rendered this tick
+        public HapticFlags Flags;
+        public double ClosestDistance;  // m
+        public ulong Tick;        // consecutive samples differ by 1
+    }
+
     /// <summary>An intersection polyline: where the tool's surface crosses another body's.</summary>
     public sealed class Polyline
     {
@@ -337,7 +365,7 @@ namespace Proxima
         public int LocalPriority;     // the same for the local tracking thread
         public Bool32 LockMemory;     // mlockall once the threads run (process-wide, never undone)
         readonly int internalValue;
-        readonly int reserved;
+        public int TraceCapacity;     // the flight recorder: each tool's last this many ticks (0: off)
 
         /// <summary>Every field at its default (proxDefaultThreadsDef). Any thread.</summary>
         public static ThreadSettings Default => Native.proxDefaultThreadsDef();

@@ -160,6 +160,46 @@ namespace Proxima.Tests
         }
 
         [Test]
+        public void TheFlightRecorderKeepsEveryTick()
+        {
+            var path = new[] { new Pose(new Vec3(0.12, 0, 0), Quat.Identity), Near };
+            ScriptedDevice device = world.CreateScriptedDevice(path, 0.2, false);
+            tool.SetDevice(device);
+            Assert.AreEqual(0, tool.GetHapticTrace(16).Length, "never started: nothing recorded");
+            ThreadSettings settings = ThreadSettings.Default;
+            settings.TraceCapacity = 8192;
+            world.StartThreads(settings);
+            // Closed on the count, not on time: the path done and 300 ticks more.
+            var clock = Stopwatch.StartNew();
+            while ((device.Record.Progress < 1.0 || device.Record.Writes < 500) && clock.Elapsed.TotalSeconds < 60)
+                Thread.Sleep(5);
+            world.StopThreads();
+            ScriptedDeviceRecord r = device.Record;
+            HapticSample[] trace = tool.GetHapticTrace(8192);
+            Assert.AreEqual((long)r.Writes, trace.Length, "every tick of the run, the fade-out included");
+            double maxForce = 0;
+            for (int i = 0; i < trace.Length; i++)
+            {
+                Assert.AreEqual((ulong)i, trace[i].Tick);
+                if (i > 0) Assert.Greater(trace[i].Time, trace[i - 1].Time);
+                Vec3 f = trace[i].Force;
+                maxForce = Math.Max(maxForce, Math.Sqrt(f.X * f.X + f.Y * f.Y + f.Z * f.Z));
+                Assert.LessOrEqual(trace[i].DevicePose.Position.X, 0.12 + 1e-12);
+            }
+            Assert.AreEqual(r.MaxForce, maxForce, 1e-12, "the device's largest force is the trace's");
+            HapticSample last = trace[trace.Length - 1];
+            Assert.AreEqual(0.0, last.Force.X);
+            Assert.IsTrue((last.Flags & HapticFlags.Stopping) != 0);
+            Assert.AreEqual(Near.Position.X, last.DevicePose.Position.X, 1e-12);
+            var few = new HapticSample[4];
+            Assert.AreEqual(4, tool.GetHapticTrace(few));
+            Assert.AreEqual(last.Tick, few[3].Tick, "the newest, oldest first");
+            Assert.Throws<ArgumentNullException>(() => tool.GetHapticTrace(null));
+            settings.TraceCapacity = -1;
+            Support.Throws(Result.InvalidArgument, "trace capacity", () => world.StartThreads(settings));
+        }
+
+        [Test]
         public void ScriptedDeviceFromAFile()
         {
             string file = System.IO.Path.GetTempFileName();
