@@ -46,9 +46,17 @@ class TraceRing {
   static constexpr std::size_t kWords = (sizeof(T) + 7) / 8;
 
  public:
-  explicit TraceRing(std::size_t capacity)
+  // Keeps the newest `capacity` samples. The ring has a margin of slots
+  // beyond them, so that the writer can go on while a reader copies a full
+  // ring (a slow reader, under a sanitizer say) without overwriting any of
+  // the samples it copies.
+  explicit TraceRing(std::size_t capacity) : TraceRing(capacity, std::max<std::size_t>(64, capacity / 8)) {}
+  // With a margin of one's own: for tests (0 makes a reader's copy of a
+  // full ring race the writer).
+  TraceRing(std::size_t capacity, std::size_t margin)
       : capacity_(std::max<std::size_t>(capacity, 1)),
-        words_(new std::atomic<std::uint64_t>[capacity_ * kWords]()) {}
+        slots_(capacity_ + margin),
+        words_(new std::atomic<std::uint64_t>[slots_ * kWords]()) {}
 
   std::size_t capacity() const { return capacity_; }
   // Samples pushed so far.
@@ -61,21 +69,21 @@ class TraceRing {
     const std::uint64_t s = state_.load(std::memory_order_relaxed);
     const std::uint64_t n = s / 2;
     state_.store(s + 1, std::memory_order_relaxed);  // odd: sample n under way
-    std::atomic<std::uint64_t>* slot = &words_[(n % capacity_) * kWords];
+    std::atomic<std::uint64_t>* slot = &words_[(n % slots_) * kWords];
     for (std::size_t i = 0; i < kWords; ++i) slot[i].store(words[i], std::memory_order_release);
     state_.store(s + 2, std::memory_order_release);  // even: n + 1 samples whole
   }
 
   // Copies the newest samples, at most `max`, oldest first, into `out`;
   // returns how many. Samples the writer overwrote during the copy are left
-  // out (only when the ring is smaller than the ticks a copy takes).
+  // out (only when the writer laps the margin during a copy).
   std::size_t copy_newest(T* out, std::size_t max) const {
     const std::uint64_t before = state_.load(std::memory_order_acquire) / 2;
     const std::uint64_t k = std::min<std::uint64_t>({max, capacity_, before});
     const std::uint64_t first = before - k;
     std::uint64_t words[kWords];
     for (std::uint64_t i = 0; i < k; ++i) {
-      const std::atomic<std::uint64_t>* slot = &words_[((first + i) % capacity_) * kWords];
+      const std::atomic<std::uint64_t>* slot = &words_[((first + i) % slots_) * kWords];
       for (std::size_t w = 0; w < kWords; ++w) words[w] = slot[w].load(std::memory_order_acquire);
       std::memcpy(&out[i], words, sizeof(T));
     }
@@ -84,7 +92,7 @@ class TraceRing {
     // sample up to the one the newest begun write overwrites may be torn.
     const std::uint64_t after = state_.load(std::memory_order_acquire);
     const std::uint64_t begun = after / 2 + (after & 1);  // writes begun: whole or under way
-    const std::uint64_t oldest_whole = begun > capacity_ ? begun - capacity_ : 0;
+    const std::uint64_t oldest_whole = begun > slots_ ? begun - slots_ : 0;
     if (first >= oldest_whole) return static_cast<std::size_t>(k);
     const std::uint64_t torn = std::min(k, oldest_whole - first);
     std::memmove(static_cast<void*>(out), out + torn, static_cast<std::size_t>(k - torn) * sizeof(T));
@@ -92,7 +100,8 @@ class TraceRing {
   }
 
  private:
-  std::size_t capacity_;
+  std::size_t capacity_;  // what readers get at most
+  std::size_t slots_;     // capacity_ and the margin
   std::unique_ptr<std::atomic<std::uint64_t>[]> words_;
   // 2 n: n samples written, all whole; 2 n + 1: sample n is being written.
   std::atomic<std::uint64_t> state_{0};

@@ -15,7 +15,7 @@ namespace prox::runtime {
 namespace {
 
 constexpr int kMaxContactsPerTool = 1 << 20;  // ThreadSettings::max_contacts
-constexpr int kMaxTraceCapacity = 1 << 20;    // ThreadSettings::trace_capacity: 17 min at 1 kHz, 192 MiB
+constexpr int kMaxTraceCapacity = 1 << 20;    // ThreadSettings::trace_capacity: 17 min at 1 kHz, 216 MiB
 
 // x y z, then the rotation as a quaternion w x y z.
 void pose_words(const Pose& pose, double out[7]) {
@@ -305,7 +305,8 @@ void Threads::haptic_main() {
       tool->wrench.store({w});
       if (tool->trace) {
         const Pose device = tool->pose.load().pose;
-        record(*tool, now(), device, device, w, kNoContact, 0, kTraceFaded | kTraceStopping);
+        // The device is told the fade is the gate's doing (clipped).
+        record(*tool, now(), device, device, w, kNoContact, 0, kTraceFaded | kTraceStopping | kTraceClipped);
       }
       zero = zero && glm::length(w.force) == 0.0 && glm::length(w.torque) == 0.0;
     }
