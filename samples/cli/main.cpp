@@ -38,6 +38,16 @@ const char* kUsage =
     "  proxima devices [--json FILE]\n"
     "  proxima --version\n";
 
+// The usage of one command: its lines of kUsage (empty: no such command).
+std::string usage_of(const std::string& command) {
+  const std::string usage = kUsage, start = "  proxima " + command + " ";
+  std::size_t from = usage.find(start);
+  if (from == std::string::npos) from = usage.find("  proxima " + command + "\n");
+  if (from == std::string::npos) return "";
+  const std::size_t to = usage.find("  proxima ", from + 1);
+  return "usage:\n" + usage.substr(from, to == std::string::npos ? std::string::npos : to - from);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -47,6 +57,15 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string command = argv[1];
+  // `proxima COMMAND --help`: that command's usage, whatever else is given.
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const std::string usage = usage_of(command);
+    if ((arg == "--help" || arg == "-h") && !usage.empty()) {
+      std::fputs(usage.c_str(), stdout);
+      return 0;
+    }
+  }
   try {
     Args args(argc, argv, 2);
     if (command == "info") return info(args);

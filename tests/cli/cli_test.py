@@ -7,6 +7,7 @@ Every expected value is worked out by hand from the scene written here.
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -37,6 +38,23 @@ class CliTest(unittest.TestCase):
 
     def tearDown(self):
         self.dir.cleanup()
+
+    def test_every_command_has_help_listing_every_option(self):
+        # The options each command's source parses, read from it: the usage
+        # text must name every one.
+        sources = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "samples", "cli")
+        for command in ("info", "lmd", "polylines", "path", "run", "devices"):
+            with self.subTest(command=command):
+                r = run(command, "--help")
+                self.assertEqual(r.returncode, 0, r.stderr)
+                self.assertTrue(r.stdout.startswith("usage:\n  proxima " + command), r.stdout)
+                self.assertNotIn("proxima " + ("lmd" if command != "lmd" else "info"), r.stdout,
+                                 "only this command's usage")
+                with open(os.path.join(sources, command + ".cpp")) as f:
+                    options = set(re.findall(r'opt == "(--[a-z0-9-]+)"', f.read()))
+                for option in options:
+                    self.assertIn(option, r.stdout, "%s --help omits %s" % (command, option))
+        self.assertEqual(run("--help").returncode, 0)
 
     def test_info_counts_a_square(self):
         r = run("info", self.square)
