@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 
 namespace prox::mock_xr {
 
@@ -40,9 +42,32 @@ Pose grip_at(XrTime t, V* velocity, V* angular) {
   return p;
 }
 
+// ---- habits ---------------------------------------------------------------------------
 namespace {
 
+std::atomic<std::uint32_t> g_panel_habits{0};
+
+}  // namespace
+
+std::uint32_t habits_for_new_instance() {
+  std::uint32_t h = g_panel_habits.load();
+  if (const char* env = std::getenv("PROX_MOCK_XR_HABITS")) {
+    static const struct {
+      const char* name;
+      std::uint32_t bit;
+    } kNames[] = {{"zero_display_time", PROX_MOCK_XR_HABIT_ZERO_DISPLAY_TIME},
+                  {"no_timespec", PROX_MOCK_XR_HABIT_NO_TIMESPEC},
+                  {"stays_ready", PROX_MOCK_XR_HABIT_STAYS_READY},
+                  {"answers_unfocused", PROX_MOCK_XR_HABIT_ANSWERS_UNFOCUSED}};
+    for (const auto& n : kNames)
+      if (std::strstr(env, n.name)) h |= n.bit;
+  }
+  return h;
+}
+
 // ---- the control panel ---------------------------------------------------------------
+namespace {
+
 void set_script(const ProxMockXrKey* keys, int32_t count) {
   std::lock_guard<std::mutex> lock(g.mutex);
   g.script.assign(keys, keys + std::min(count, kMaxKeys));
@@ -62,11 +87,14 @@ int32_t vibrations(ProxMockXrVibration* out, int32_t first, int32_t capacity) {
     out[i] = g.log[std::size_t(first + i)];
   return int32_t(g.log.size());
 }
+void set_habits(uint32_t habits) { g_panel_habits.store(habits); }
+uint64_t wait_calls() { return g_waits.load(); }
+uint64_t sync_calls() { return g_syncs.load(); }
 uint64_t locate_calls() { return g_locates.load(); }
 int32_t max_concurrent() { return g_max_inside.load(); }
 
-const ProxMockXrControl kControl = {set_script,   set_tracked,    set_focused, vibrations,
-                                    locate_calls, max_concurrent, now_ns};
+const ProxMockXrControl kControl = {set_script,   set_tracked,    set_focused, vibrations, locate_calls,
+                                    max_concurrent, now_ns,         set_habits,  wait_calls, sync_calls};
 }  // namespace
 
 const ProxMockXrControl* get_control() { return &kControl; }

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <thread>
 
@@ -24,6 +25,7 @@ namespace prox::mock_xr {
 State g;
 std::atomic<std::uint64_t> g_locates{0};
 std::atomic<int> g_inside{0}, g_max_inside{0};
+std::atomic<std::uint64_t> g_waits{0}, g_syncs{0};
 std::uintptr_t g_next_handle = 0x10000;
 
 std::string path_string(XrPath p) { return p >= 1 && p <= g.paths.size() ? g.paths[p - 1] : std::string(); }
@@ -35,7 +37,7 @@ void set_state(XrSessionState s) {
 
 bool action_active(XrAction action, XrPath subaction) {
   const auto a = g.actions.find(action);
-  if (a == g.actions.end() || !focused()) return false;
+  if (a == g.actions.end() || !answers()) return false;
   if (std::find(g.synced.begin(), g.synced.end(), a->second->set) == g.synced.end()) return false;
   return subaction == XR_NULL_PATH || path_string(subaction) == "/user/hand/right";
 }
@@ -60,10 +62,12 @@ XRAPI_ATTR XrResult XRAPI_CALL EnumerateInstanceExtensionProperties(const char* 
                                                                     uint32_t* count,
                                                                     XrExtensionProperties* props) {
   if (layer) return XR_ERROR_API_LAYER_NOT_PRESENT;
-  *count = 2;
+  // Before an instance: the habits a new one would have.
+  const uint32_t n = (habits_for_new_instance() & PROX_MOCK_XR_HABIT_NO_TIMESPEC) ? 1 : 2;
+  *count = n;
   if (capacity == 0) return XR_SUCCESS;
-  if (capacity < 2) return XR_ERROR_SIZE_INSUFFICIENT;
-  for (int i = 0; i < 2; ++i) {
+  if (capacity < n) return XR_ERROR_SIZE_INSUFFICIENT;
+  for (uint32_t i = 0; i < n; ++i) {
     std::snprintf(props[i].extensionName, sizeof props[i].extensionName, "%s", kExtensions[i]);
     props[i].extensionVersion = kExtensionVersions[i];
   }
@@ -74,11 +78,12 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateInstance(const XrInstanceCreateInfo* info, 
   std::lock_guard<std::mutex> lock(g.mutex);
   if (g.instance) return XR_ERROR_LIMIT_REACHED;
   bool headless = false, timespec = false;
+  const std::uint32_t habits = habits_for_new_instance();
   for (uint32_t i = 0; i < info->enabledExtensionCount; ++i) {
     const std::string e = info->enabledExtensionNames[i];
     if (e == kExtensions[0])
       headless = true;
-    else if (e == kExtensions[1])
+    else if (e == kExtensions[1] && !(habits & PROX_MOCK_XR_HABIT_NO_TIMESPEC))
       timespec = true;
     else
       return XR_ERROR_EXTENSION_NOT_PRESENT;
@@ -98,6 +103,7 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateInstance(const XrInstanceCreateInfo* info, 
   g.first_located = 0;
   g.headless = headless;
   g.timespec = timespec;
+  g.habits = habits;
   *instance = kInstance;
   return XR_SUCCESS;
 }
@@ -258,6 +264,7 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateSession(XrInstance instance, const XrSessio
   if (info->next != nullptr || !g.headless) return XR_ERROR_GRAPHICS_DEVICE_INVALID;
   if (g.session) return XR_ERROR_LIMIT_REACHED;
   g.session = true;
+  g.session_begun = 0;
   g.running = g.attached = g.exit_requested = g.frame_begun = false;
   g.synced.clear();
   set_state(XR_SESSION_STATE_IDLE);
@@ -269,6 +276,11 @@ XRAPI_ATTR XrResult XRAPI_CALL CreateSession(XrInstance instance, const XrSessio
 XRAPI_ATTR XrResult XRAPI_CALL DestroySession(XrSession session) {
   std::lock_guard<std::mutex> lock(g.mutex);
   CHECK_SESSION(session);
+  // For a test of a separate process (the sample): how fast its loop ran.
+  if (std::getenv("PROX_MOCK_XR_REPORT") && g.session_begun > 0)
+    std::fprintf(stderr, "mock runtime: %llu xrSyncActions, %llu xrWaitFrame in %.3f s since xrBeginSession\n",
+                 static_cast<unsigned long long>(g_syncs.load()), static_cast<unsigned long long>(g_waits.load()),
+                 double(now_ns() - g.session_begun) * 1e-9);
   g.session = false;
   g.spaces.clear();
   for (auto& s : g.sets) s.second->attached = false;
@@ -284,6 +296,8 @@ XRAPI_ATTR XrResult XRAPI_CALL BeginSession(XrSession session, const XrSessionBe
   if (info->primaryViewConfigurationType != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO)
     return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
   g.running = true;
+  g.session_begun = now_ns();
+  if (habit(PROX_MOCK_XR_HABIT_STAYS_READY)) return XR_SUCCESS;
   set_state(XR_SESSION_STATE_SYNCHRONIZED);
   set_state(XR_SESSION_STATE_VISIBLE);
   set_state(XR_SESSION_STATE_FOCUSED);
@@ -348,7 +362,8 @@ XRAPI_ATTR XrResult XRAPI_CALL SyncActions(XrSession session, const XrActionsSyn
     if (s == g.sets.end()) return XR_ERROR_HANDLE_INVALID;
     if (!s->second->attached) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
   }
-  if (!focused()) {
+  g_syncs.fetch_add(1);
+  if (!answers()) {
     g.synced.clear();
     return XR_SESSION_NOT_FOCUSED;
   }
@@ -378,6 +393,14 @@ XRAPI_ATTR XrResult XRAPI_CALL WaitFrame(XrSession session, const XrFrameWaitInf
     std::lock_guard<std::mutex> lock(g.mutex);
     CHECK_SESSION(session);
     if (!g.running) return XR_ERROR_SESSION_NOT_RUNNING;
+    g_waits.fetch_add(1);
+    // A headless session must not render (XR_MND_headless).
+    state->shouldRender = XR_FALSE;
+    if (habit(PROX_MOCK_XR_HABIT_ZERO_DISPLAY_TIME)) {  // no pacing, no time
+      state->predictedDisplayTime = 0;
+      state->predictedDisplayPeriod = 0;
+      return XR_SUCCESS;
+    }
     last = g.last_wait;
   }
   // Paces the app at 90 Hz, as a compositor would.
@@ -388,7 +411,6 @@ XRAPI_ATTR XrResult XRAPI_CALL WaitFrame(XrSession session, const XrFrameWaitInf
   g.last_wait = std::max(wake, now);
   state->predictedDisplayTime = g.last_wait + 2 * kPeriod;
   state->predictedDisplayPeriod = kPeriod;
-  state->shouldRender = g.state == XR_SESSION_STATE_VISIBLE || focused() ? XR_TRUE : XR_FALSE;
   return XR_SUCCESS;
 }
 

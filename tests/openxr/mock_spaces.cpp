@@ -121,7 +121,7 @@ static XrResult log_haptic(XrSession session, const XrHapticActionInfo* info, co
   e.time = now_ns();
   e.stop = v ? 0 : 1;
   if (v) e.amplitude = v->amplitude, e.duration = v->duration, e.frequency = v->frequency;
-  e.result = focused() ? XR_SUCCESS : XR_SESSION_NOT_FOCUSED;
+  e.result = answers() ? XR_SUCCESS : XR_SESSION_NOT_FOCUSED;
   if (v && !(v->amplitude >= 0.0f && v->amplitude <= 1.0f)) e.result = XR_ERROR_VALIDATION_FAILURE;
   g.log.push_back(e);
   return e.result;

@@ -70,11 +70,14 @@ struct State {
   std::vector<ProxMockXrKey> script;
   bool tracked = true;
   std::vector<ProxMockXrVibration> log;
+  std::uint32_t habits = 0;  // PROX_MOCK_XR_HABIT_*, fixed at xrCreateInstance
+  XrTime session_begun = 0;
 };
 
 extern State g;
 extern std::atomic<std::uint64_t> g_locates;
 extern std::atomic<int> g_inside, g_max_inside;
+extern std::atomic<std::uint64_t> g_waits, g_syncs;
 
 // Counts overlapping calls (from the app's and Proxima's threads).
 struct Inside {
@@ -106,6 +109,11 @@ H new_handle() {
 std::string path_string(XrPath p);
 void set_state(XrSessionState s);  // queues the event too
 inline bool focused() { return g.state == XR_SESSION_STATE_FOCUSED; }
+inline bool habit(std::uint32_t h) { return (g.habits & h) != 0; }
+// Input and haptics answer: focused, or a runtime that answers regardless.
+inline bool answers() { return focused() || habit(PROX_MOCK_XR_HABIT_ANSWERS_UNFOCUSED); }
+// The habits for a new instance: the panel's and the environment's.
+std::uint32_t habits_for_new_instance();
 bool action_active(XrAction action, XrPath subaction);
 // The default motion (mock_control.h) or the script, at a time.
 Pose grip_at(XrTime t, V* velocity, V* angular);
