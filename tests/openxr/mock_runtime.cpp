@@ -6,7 +6,8 @@
 // checked strictly, so a wrong call fails here as it would on a real
 // runtime. Loaded by the real OpenXR loader through a manifest
 // (XR_RUNTIME_JSON); the one symbol it exports is
-// xrNegotiateLoaderRuntimeInterface. This file: instances, paths, actions,
+// xrNegotiateLoaderRuntimeInterface. On request it plays real runtimes'
+// habits (mock_control.h). This file: instances, paths, actions,
 // sessions, events, frames and time; spaces and haptics are in
 // mock_spaces.cpp, the grip's script and the control panel in
 // mock_control.cpp.

@@ -43,14 +43,17 @@ typedef enum proxXrPoseMode {
  * the app's time conversion extension, the frames the app reports, else
  * the device's own monotonic clock (docs/openxr.md, "Threads and time"). */
 typedef enum proxXrTimeSource {
-  PROX_XR_TIME_NONE = 0,     /* no time yet: no locate, the tick counts as untracked */
-  PROX_XR_TIME_TIMESPEC = 1, /* XR_KHR_convert_timespec_time (def.timespecTime) */
-  PROX_XR_TIME_WIN32_PERFORMANCE_COUNTER =
-      2,                   /* XR_KHR_win32_convert_performance_counter_time (def.win32PerformanceCounterTime) */
-  PROX_XR_TIME_FRAMES = 3, /* the last predicted display time (proxXrDevice_OnFrame), advanced by the monotonic
-                              clock */
-  PROX_XR_TIME_OWN_CLOCK = 4, /* the device's monotonic clock from the newest time the runtime accepted (a locate
-                                 that succeeded, or proxXrDevice_OnRuntimeTime) */
+  /* No time yet: no locate, the tick counts as untracked. */
+  PROX_XR_TIME_NONE = 0,
+  /* XR_KHR_convert_timespec_time (def.timespecTime). */
+  PROX_XR_TIME_TIMESPEC = 1,
+  /* XR_KHR_win32_convert_performance_counter_time (def.win32PerformanceCounterTime). */
+  PROX_XR_TIME_WIN32_PERFORMANCE_COUNTER = 2,
+  /* The last predicted display time (proxXrDevice_OnFrame), advanced by the monotonic clock. */
+  PROX_XR_TIME_FRAMES = 3,
+  /* The device's monotonic clock from the newest time the runtime accepted
+   * (a locate that succeeded, def.runtimeTime, proxXrDevice_OnRuntimeTime). */
+  PROX_XR_TIME_OWN_CLOCK = 4,
   PROX_XR_TIME_SOURCE_FORCE32 = 0x7FFFFFFF
 } proxXrTimeSource;
 

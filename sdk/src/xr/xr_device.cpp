@@ -10,6 +10,7 @@
 #include <ctime>
 
 #if defined(_WIN32)
+#define NOMINMAX  // std::min and std::clamp stay usable
 #include <windows.h>
 #endif
 
