@@ -3,16 +3,24 @@
  * (a bunny), and the force of its contacts with another bunny comes back as
  * the controller's vibration.
  *
- * Headless (XR_MND_headless: no graphics binding, no swapchain), so it runs
- * on any runtime that offers that extension, and in CI on the test runtime
- * of tests/openxr, whose scripted hand reaches forward 0.15 m every 4 s.
- * The rules the app follows (Proxima borrows, never owns) are in
- * docs/openxr.md.
+ * Headless (XR_MND_headless: no graphics binding, no swapchain), with the
+ * frame loop that extension describes: the frame calls only while
+ * xrWaitFrame gives a display time, else paced by sleep; "now" from
+ * whatever clock the runtime offers. It runs in CI on the test runtime of
+ * tests/openxr (whose scripted hand reaches forward 0.15 m every 4 s, with
+ * or without real runtimes' habits) and by hand on Monado; the runtimes
+ * and what each does are in docs/openxr.md, with the rules the app follows
+ * (Proxima borrows, never owns).
  *
  *   openxr_sample [path/to/mesh.obj|.gltf|.glb] [seconds]
  */
+#if defined(_WIN32)
+#define XR_USE_PLATFORM_WIN32
+#include <windows.h>
+#else
 #define XR_USE_TIMESPEC
 #include <time.h>
+#endif
 
 #include <proxima/proxima_openxr.h>
 
@@ -61,8 +69,75 @@ typedef struct App {
   XrPath right;
   XrSessionState state;
   int running;
+  double state_since;    /* when the state last changed (now_s) */
+  int frame_calls;       /* 0 once xrWaitFrame gave no display time (headless) */
+  XrTime display_time;   /* the last predicted display time > 0, ... */
+  double display_at;     /* ... and when it came */
+  XrTime event_time;     /* the newest event time > 0, ... */
+  double event_at;       /* ... and when it was polled */
+  int time_extension;    /* 1: timespec (2: Windows' performance counter) conversion enabled */
   proxXrDeviceId device; /* 0 until Proxima holds the controller */
 } App;
+
+static double now_s(void) {
+#if defined(_WIN32)
+  LARGE_INTEGER c, f;
+  QueryPerformanceCounter(&c);
+  QueryPerformanceFrequency(&f);
+  return (double)c.QuadPart / (double)f.QuadPart;
+#else
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+#endif
+}
+
+static void sleep_s(double s) {
+#if defined(_WIN32)
+  Sleep((DWORD)(s * 1000.0));
+#else
+  struct timespec t = {0, (long)(s * 1e9)};
+  nanosleep(&t, NULL);
+#endif
+}
+
+static const char* state_name(XrSessionState s) {
+  static const char* names[] = {"XR_SESSION_STATE_UNKNOWN",      "XR_SESSION_STATE_IDLE",
+                                "XR_SESSION_STATE_READY",        "XR_SESSION_STATE_SYNCHRONIZED",
+                                "XR_SESSION_STATE_VISIBLE",      "XR_SESSION_STATE_FOCUSED",
+                                "XR_SESSION_STATE_STOPPING",     "XR_SESSION_STATE_LOSS_PENDING",
+                                "XR_SESSION_STATE_EXITING"};
+  return s >= 0 && s <= XR_SESSION_STATE_EXITING ? names[s] : "an unknown XrSessionState";
+}
+
+/* "Now" as an XrTime, from the first clock the runtime offers: its time
+ * conversion extension, else the last display time it predicted, else the
+ * newest time an event carried, each advanced by the app's monotonic clock.
+ * 0 when it has offered none yet. */
+static XrTime xr_now(const App* app) {
+  XrTime t = 0;
+#if defined(_WIN32)
+  PFN_xrConvertWin32PerformanceCounterToTimeKHR convert = NULL;
+  if (app->time_extension == 2 &&
+      XR_SUCCEEDED(xrGetInstanceProcAddr(app->instance, "xrConvertWin32PerformanceCounterToTimeKHR",
+                                         (PFN_xrVoidFunction*)&convert))) {
+    LARGE_INTEGER counter;
+    QueryPerformanceCounter(&counter);
+    if (XR_SUCCEEDED(convert(app->instance, &counter, &t)) && t > 0) return t;
+  }
+#else
+  PFN_xrConvertTimespecTimeToTimeKHR convert = NULL;
+  if (app->time_extension == 1 && XR_SUCCEEDED(xrGetInstanceProcAddr(app->instance, "xrConvertTimespecTimeToTimeKHR",
+                                                                     (PFN_xrVoidFunction*)&convert))) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    if (XR_SUCCEEDED(convert(app->instance, &ts, &t)) && t > 0) return t;
+  }
+#endif
+  if (app->display_time > 0) return app->display_time + (XrTime)((now_s() - app->display_at) * 1e9);
+  if (app->event_time > 0) return app->event_time + (XrTime)((now_s() - app->event_at) * 1e9);
+  return 0;
+}
 
 /* Polls every event and forwards session state changes to Proxima: only the
  * app polls (xrPollEvent consumes events). */
@@ -72,8 +147,15 @@ static int poll_events(App* app) {
     if (event.type == XR_TYPE_EVENT_DATA_SESSION_STATE_CHANGED) {
       const XrEventDataSessionStateChanged* changed = (const XrEventDataSessionStateChanged*)&event;
       app->state = changed->state;
+      app->state_since = now_s();
       if (app->device.index1 && !ok(proxXrDevice_OnSessionState(app->device, app->state), "OnSessionState"))
         return 0;
+      if (changed->time > app->event_time) { /* a time the runtime gave: Proxima's last resort too */
+        app->event_time = changed->time;
+        app->event_at = now_s();
+        if (app->device.index1 && !ok(proxXrDevice_OnRuntimeTime(app->device, changed->time), "OnRuntimeTime"))
+          return 0;
+      }
       if (app->state == XR_SESSION_STATE_READY) {
         XrSessionBeginInfo begin = {.type = XR_TYPE_SESSION_BEGIN_INFO};
         begin.primaryViewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
@@ -90,35 +172,55 @@ static int poll_events(App* app) {
 }
 
 /* One frame: wait, begin, sync the app's set (which holds Proxima's
- * actions: Proxima never syncs), tell Proxima the frame's time, end. */
+ * actions: Proxima never syncs), tell Proxima the frame's time, end. Headless
+ * as XR_MND_headless allows: once xrWaitFrame gives no display time (Monado
+ * gives 0 and does not block), no frame calls; a sync and a sleep instead. */
 static int frame(App* app) {
   if (!poll_events(app)) return 0;
   if (!app->running) {
-    struct timespec t = {0, 10000000};
-    nanosleep(&t, NULL);
+    sleep_s(0.01);
     return 1;
   }
   XrFrameState fs = {.type = XR_TYPE_FRAME_STATE};
-  if (!xr_ok(xrWaitFrame(app->session, NULL, &fs), "xrWaitFrame")) return 0;
-  if (!xr_ok(xrBeginFrame(app->session, NULL), "xrBeginFrame")) return 0;
+  if (app->frame_calls) {
+    if (!xr_ok(xrWaitFrame(app->session, NULL, &fs), "xrWaitFrame")) return 0;
+    if (fs.predictedDisplayTime > 0) {
+      if (!xr_ok(xrBeginFrame(app->session, NULL), "xrBeginFrame")) return 0;
+      app->display_time = fs.predictedDisplayTime;
+      app->display_at = now_s();
+    } else {
+      app->frame_calls = 0;
+      printf("xrWaitFrame gives no display time (headless): no frame calls from here on, paced by sleep\n");
+    }
+  }
   XrActiveActionSet active = {app->set, XR_NULL_PATH};
   XrActionsSyncInfo sync = {.type = XR_TYPE_ACTIONS_SYNC_INFO};
   sync.countActiveActionSets = 1;
   sync.activeActionSets = &active;
   if (!xr_ok(xrSyncActions(app->session, &sync), "xrSyncActions")) return 0;
+  if (!app->frame_calls) {
+    sleep_s(1.0 / 90.0);
+    return 1;
+  }
   if (app->device.index1 &&
       !ok(proxXrDevice_OnFrame(app->device, fs.predictedDisplayTime, fs.predictedDisplayPeriod), "OnFrame"))
     return 0;
   XrFrameEndInfo end = {.type = XR_TYPE_FRAME_END_INFO};
   end.displayTime = fs.predictedDisplayTime;
   end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
-  return xr_ok(xrEndFrame(app->session, &end), "xrEndFrame");
+  if (!xr_ok(xrEndFrame(app->session, &end), "xrEndFrame")) return 0;
+  if (fs.predictedDisplayPeriod <= 0) sleep_s(1.0 / 90.0); /* a wait that does not pace */
+  return 1;
 }
 
-static double now_s(void) {
-  struct timespec t;
-  clock_gettime(CLOCK_MONOTONIC, &t);
-  return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+static const char* time_source_name(proxXrTimeSource s) {
+  switch (s) {
+    case PROX_XR_TIME_TIMESPEC: return "XR_KHR_convert_timespec_time";
+    case PROX_XR_TIME_WIN32_PERFORMANCE_COUNTER: return "XR_KHR_win32_convert_performance_counter_time";
+    case PROX_XR_TIME_FRAMES: return "the predicted display times";
+    case PROX_XR_TIME_OWN_CLOCK: return "Proxima's own clock from the runtime's times";
+    default: return "nowhere (no time)";
+  }
 }
 
 int main(int argc, char** argv) {
@@ -126,15 +228,28 @@ int main(int argc, char** argv) {
   const double seconds = argc > 2 ? atof(argv[2]) : 5.0;
   App app;
   memset(&app, 0, sizeof app);
+  app.frame_calls = 1;
 
-  /* 1. The instance: headless, and XR_KHR_convert_timespec_time when the
-   *    runtime has it (Proxima's thread then asks OpenXR for "now"). */
-  const int timespec = has_extension(XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME);
-  const char* extensions[2] = {XR_MND_HEADLESS_EXTENSION_NAME, XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME};
+  /* 1. The instance: headless, and the time conversion extension when the
+   *    runtime has one (Proxima's thread then asks OpenXR for "now";
+   *    without, it counts from the times the runtime gives). */
+#if defined(_WIN32)
+  const char* time_extension = XR_KHR_WIN32_CONVERT_PERFORMANCE_COUNTER_TIME_EXTENSION_NAME;
+  const int time_kind = 2;
+#else
+  const char* time_extension = XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME;
+  const int time_kind = 1;
+#endif
+  app.time_extension = has_extension(time_extension) ? time_kind : 0;
+  if (!has_extension(XR_MND_HEADLESS_EXTENSION_NAME)) {
+    fprintf(stderr, "the OpenXR runtime does not offer XR_MND_headless: this sample needs a headless session\n");
+    return 1;
+  }
+  const char* extensions[2] = {XR_MND_HEADLESS_EXTENSION_NAME, time_extension};
   XrInstanceCreateInfo ici = {.type = XR_TYPE_INSTANCE_CREATE_INFO};
   strcpy(ici.applicationInfo.applicationName, "proxima-openxr-sample");
   ici.applicationInfo.apiVersion = XR_MAKE_VERSION(1, 0, 0);
-  ici.enabledExtensionCount = timespec ? 2 : 1;
+  ici.enabledExtensionCount = app.time_extension ? 2 : 1;
   ici.enabledExtensionNames = extensions;
   if (!xr_ok(xrCreateInstance(&ici, &app.instance),
              "xrCreateInstance (is an OpenXR runtime with XR_MND_headless active?)"))
@@ -204,24 +319,30 @@ int main(int argc, char** argv) {
   XrSpaceLocation hand = {.type = XR_TYPE_SPACE_LOCATION};
   const double wait_until = now_s() + 10.0;
   while (!(hand.locationFlags & XR_SPACE_LOCATION_POSITION_VALID_BIT)) {
-    if (now_s() > wait_until) {
-      fprintf(stderr, "the right hand was not tracked within 10 s\n");
+    if (!frame(&app)) return 1;
+    const double now = now_s();
+    if (app.running && app.state != XR_SESSION_STATE_FOCUSED && now - app.state_since > 5.0) {
+      fprintf(stderr,
+              "the session stayed in %s for 5 s after xrBeginSession: the runtime never focused it, so it gives "
+              "this app no input (stock Monado's headless sessions stay in XR_SESSION_STATE_READY; see "
+              "docs/openxr.md)\n",
+              state_name(app.state));
       return 1;
     }
-    if (!frame(&app)) return 1;
-    if (app.state == XR_SESSION_STATE_FOCUSED) {
-      XrTime t;
-      struct timespec ts;
-      clock_gettime(CLOCK_MONOTONIC, &ts);
-      PFN_xrConvertTimespecTimeToTimeKHR convert = NULL;
-      if (timespec)
-        xrGetInstanceProcAddr(app.instance, "xrConvertTimespecTimeToTimeKHR", (PFN_xrVoidFunction*)&convert);
-      t = convert && XR_SUCCEEDED(convert(app.instance, &ts, &t)) ? t : 1;
-      if (t > 1)
-        xrLocateSpace(grip_space, app.local, t, &hand);
+    if (now > wait_until) {
+      if (app.state != XR_SESSION_STATE_FOCUSED)
+        fprintf(stderr, "the session never became focused within 10 s (it is in %s)\n", state_name(app.state));
+      else if (xr_now(&app) == 0)
+        fprintf(stderr,
+                "the runtime offers no time: no %s, no display time from xrWaitFrame and no event time\n",
+                time_extension);
       else
-        hand.locationFlags = 0;
+        fprintf(stderr, "the right hand was not tracked within 10 s (is a right controller on?)\n");
+      return 1;
     }
+    const XrTime t = app.state == XR_SESSION_STATE_FOCUSED ? xr_now(&app) : 0;
+    hand.locationFlags = 0;
+    if (t > 0 && !xr_ok(xrLocateSpace(grip_space, app.local, t, &hand), "xrLocateSpace")) return 1;
   }
   xrDestroySpace(grip_space);
   printf("right hand at (%.3f, %.3f, %.3f) in LOCAL\n", hand.pose.position.x, hand.pose.position.y,
@@ -266,7 +387,12 @@ int main(int argc, char** argv) {
   xd.subactionPath = app.right;
   xd.toolInGrip.rotation = back;
   xd.baseToWorld = base_to_world;
-  xd.timespecTime = timespec;
+#if defined(_WIN32)
+  xd.win32PerformanceCounterTime = app.time_extension == 2;
+#else
+  xd.timespecTime = app.time_extension == 1;
+#endif
+  xd.runtimeTime = xr_now(&app); /* "now" for a runtime with no other clock */
   xd.sessionState = app.state;
   xd.forceForFullAmplitude = 2.0;
   if (!ok(proxWorld_CreateXrDevice(world, &xd, &app.device), "proxWorld_CreateXrDevice")) return 1;
@@ -322,7 +448,7 @@ int main(int argc, char** argv) {
       (unsigned long long)st.ticks, (unsigned long long)st.locates, (unsigned long long)st.untrackedTicks,
       (unsigned long long)st.notFocusedTicks, (unsigned long long)st.vibrationsSent,
       (unsigned long long)st.vibrationsRefused, (unsigned long long)st.stopsSent,
-      st.timeFromFrames ? "frames" : "XR_KHR_convert_timespec_time", felt);
+      time_source_name(st.timeSource), felt);
   /* Fails (for its test) unless the reach was felt and vibrated. */
   return felt > 0.0 && st.vibrationsSent > 0 && st.stopsSent > 0 ? 0 : 1;
 }

@@ -32,6 +32,27 @@ typedef struct ProxMockXrVibration {
   XrResult result; /* what the call returned */
 } ProxMockXrVibration;
 
+/* Habits of real runtimes (docs/openxr.md), each selectable: bits for
+ * setHabits, or names in the environment variable PROX_MOCK_XR_HABITS
+ * ("zero_display_time,no_timespec,..."), read at xrCreateInstance, for a
+ * process that cannot reach this panel (the sample). The default is none:
+ * the strict runtime. */
+enum {
+  /* xrWaitFrame returns at once with predictedDisplayTime and
+   * predictedDisplayPeriod 0 (Monado's headless sessions); xrEndFrame still
+   * refuses a displayTime of 0. */
+  PROX_MOCK_XR_HABIT_ZERO_DISPLAY_TIME = 1,
+  /* No XR_KHR_convert_timespec_time (the Windows runtimes). */
+  PROX_MOCK_XR_HABIT_NO_TIMESPEC = 2,
+  /* xrBeginSession leaves the session in READY: it never becomes FOCUSED
+   * (stock Monado's headless sessions). */
+  PROX_MOCK_XR_HABIT_STAYS_READY = 4,
+  /* While not FOCUSED, xrSyncActions still syncs (XR_SUCCESS), action
+   * spaces are still located and xrApplyHapticFeedback returns XR_SUCCESS;
+   * nothing stops a vibration when focus goes (stock Monado). */
+  PROX_MOCK_XR_HABIT_ANSWERS_UNFOCUSED = 8
+};
+
 typedef struct ProxMockXrControl {
   /* Replaces the script (at most 64 keys). With none (the default) the
    * grip moves forward and back along -z from (0.1, 1.2, -0.3) by 0.15 m
@@ -52,6 +73,12 @@ typedef struct ProxMockXrControl {
   int32_t (*maxConcurrentCalls)(void);
   /* The runtime's clock (CLOCK_MONOTONIC in ns, the XrTime it uses). */
   XrTime (*now)(void);
+  /* The habits from the next xrCreateInstance on (PROX_MOCK_XR_HABIT_*,
+   * or'ed with those of PROX_MOCK_XR_HABITS). */
+  void (*setHabits)(uint32_t habits);
+  /* xrWaitFrame and xrSyncActions calls so far. */
+  uint64_t (*waitFrameCalls)(void);
+  uint64_t (*syncCalls)(void);
 } ProxMockXrControl;
 
 typedef const ProxMockXrControl* (*ProxMockXrGetControlFn)(void);

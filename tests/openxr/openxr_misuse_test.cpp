@@ -77,6 +77,14 @@ TEST(XrDeviceMisuse, BadDefsAreRefused) {
   d = good, d.tickRate = 1.0;
   EXPECT_REFUSED(proxWorld_CreateXrDevice(scene.world, &d, &device), PROX_ERROR_INVALID_ARGUMENT,
                  "def->tickRate");
+  d = good, d.runtimeTime = -5;
+  EXPECT_REFUSED(proxWorld_CreateXrDevice(scene.world, &d, &device), PROX_ERROR_INVALID_ARGUMENT,
+                 "def->runtimeTime");
+#if !defined(_WIN32)
+  d = good, d.win32PerformanceCounterTime = 1;
+  EXPECT_REFUSED(proxWorld_CreateXrDevice(scene.world, &d, &device), PROX_ERROR_INVALID_ARGUMENT,
+                 "Windows only");
+#endif
   // A vibration action where a pose action belongs: the runtime refuses the space.
   d = good, d.poseAction = app.haptic;
   EXPECT_REFUSED(proxWorld_CreateXrDevice(scene.world, &d, &device), PROX_ERROR_INVALID_ARGUMENT,
@@ -100,6 +108,7 @@ TEST(XrDeviceMisuse, BadIdsAndCallsAreRefused) {
   EXPECT_REFUSED(proxXrDevice_GetStats(proxXrDeviceId{}, &stats), PROX_ERROR_INVALID_HANDLE, "null id");
   EXPECT_REFUSED(proxXrDevice_OnFrame(proxXrDeviceId{5, 1}, 1, 1), PROX_ERROR_INVALID_HANDLE,
                  "live XR device");
+  EXPECT_REFUSED(proxXrDevice_OnRuntimeTime(proxXrDeviceId{}, 1), PROX_ERROR_INVALID_HANDLE, "null id");
 
   proxXrDeviceId device{};
   const proxXrDeviceDef d = scene.def(app);
@@ -107,10 +116,12 @@ TEST(XrDeviceMisuse, BadIdsAndCallsAreRefused) {
   EXPECT_REFUSED(proxXrDevice_GetStats(device, nullptr), PROX_ERROR_INVALID_ARGUMENT, "stats");
   EXPECT_REFUSED(proxXrDevice_GetDeviceDef(device, nullptr), PROX_ERROR_INVALID_ARGUMENT, "def");
   EXPECT_REFUSED(proxXrDevice_OnFrame(device, 0, 1), PROX_ERROR_INVALID_ARGUMENT, "predictedDisplayTime");
+  EXPECT_REFUSED(proxXrDevice_OnRuntimeTime(device, 0), PROX_ERROR_INVALID_ARGUMENT, "time must be > 0");
   EXPECT_REFUSED(proxXrDevice_OnSessionState(device, static_cast<XrSessionState>(99)),
                  PROX_ERROR_INVALID_ARGUMENT, "XrSessionState");
   std::thread([&] {
     EXPECT_EQ(proxXrDevice_OnFrame(device, 1, 1), PROX_ERROR_WRONG_THREAD);
+    EXPECT_EQ(proxXrDevice_OnRuntimeTime(device, 1), PROX_ERROR_WRONG_THREAD);
     EXPECT_EQ(proxXrDevice_Destroy(device), PROX_ERROR_WRONG_THREAD);
     proxXrDeviceStats s;
     EXPECT_EQ(proxXrDevice_GetStats(device, &s), PROX_SUCCESS);  // any thread

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -28,6 +29,13 @@ extern "C" const char* __lsan_default_suppressions();
 extern "C" const char* __lsan_default_suppressions() { return "leak:libopenxr_loader.so\n"; }
 
 namespace prox::test {
+namespace {
+
+double steady_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
 
 void xr_check(XrResult r, const char* what) {
   if (XR_FAILED(r))
@@ -67,7 +75,7 @@ XrApp::XrApp(const XrAppOptions& options) : timespec_(options.timespec) {
   // layer, as a user's environment would tell it.
   setenv("XR_RUNTIME_JSON", PROX_MOCK_XR_RUNTIME_JSON, 1);
   setenv("XR_ENABLE_API_LAYERS", "XR_APILAYER_LUNARG_core_validation", 1);
-  mock_control();  // loaded before the loader loads it: the control outlives instances
+  mock_control().setHabits(options.habits);  // loaded before the loader loads it: the control outlives instances
   // The core validation layer reads where to write once per process: one
   // log for the process, and each app reads what was added since it began.
   static const std::string log = [] {
@@ -175,7 +183,20 @@ proxXrDeviceDef XrApp::device_def() const {
   d.subactionPath = right;
   d.timespecTime = timespec_ ? 1 : 0;
   d.sessionState = state;
+  d.runtimeTime = runtime_now();
   return d;
+}
+
+void XrApp::set_device(proxXrDeviceId device) {
+  device_ = device;
+  if (device_.index1 != 0 && lastEventTime > 0 &&
+      proxXrDevice_OnRuntimeTime(device_, runtime_now()) != PROX_SUCCESS)
+    throw std::runtime_error(std::string("proxXrDevice_OnRuntimeTime: ") + proxGetLastError());
+}
+
+XrTime XrApp::runtime_now() const {
+  if (lastEventTime <= 0) return 0;
+  return lastEventTime + XrTime((steady_seconds() - lastEventPolled) * 1e9);
 }
 
 void XrApp::frame() {
@@ -187,6 +208,12 @@ void XrApp::frame() {
       state = changed.state;
       if (device_.index1 != 0 && proxXrDevice_OnSessionState(device_, state) != PROX_SUCCESS)
         throw std::runtime_error(std::string("proxXrDevice_OnSessionState: ") + proxGetLastError());
+      if (changed.time > lastEventTime) {
+        lastEventTime = changed.time;
+        lastEventPolled = steady_seconds();
+        if (device_.index1 != 0 && proxXrDevice_OnRuntimeTime(device_, changed.time) != PROX_SUCCESS)
+          throw std::runtime_error(std::string("proxXrDevice_OnRuntimeTime: ") + proxGetLastError());
+      }
       if (state == XR_SESSION_STATE_READY) {
         XrSessionBeginInfo begin{};
         begin.type = XR_TYPE_SESSION_BEGIN_INFO;
@@ -207,8 +234,11 @@ void XrApp::frame() {
   }
   XrFrameState fs{};
   fs.type = XR_TYPE_FRAME_STATE;
-  xr_check(xrWaitFrame(session, nullptr, &fs), "xrWaitFrame");
-  xr_check(xrBeginFrame(session, nullptr), "xrBeginFrame");
+  if (frameCalls) {
+    xr_check(xrWaitFrame(session, nullptr, &fs), "xrWaitFrame");
+    frameCalls = fs.predictedDisplayTime > 0;
+    if (frameCalls) xr_check(xrBeginFrame(session, nullptr), "xrBeginFrame");
+  }
   XrActiveActionSet active{set, XR_NULL_PATH};
   XrActionsSyncInfo sync{};
   sync.type = XR_TYPE_ACTIONS_SYNC_INFO;
@@ -217,6 +247,10 @@ void XrApp::frame() {
   const XrResult r = xrSyncActions(session, &sync);
   xr_check(r, "xrSyncActions");
   if (r == XR_SESSION_NOT_FOCUSED) ++syncsNotFocused;
+  if (!frameCalls) {  // headless pacing: nothing else waits
+    std::this_thread::sleep_for(std::chrono::microseconds(11111));
+    return;
+  }
   if (device_.index1 != 0 &&
       proxXrDevice_OnFrame(device_, fs.predictedDisplayTime, fs.predictedDisplayPeriod) != PROX_SUCCESS)
     throw std::runtime_error(std::string("proxXrDevice_OnFrame: ") + proxGetLastError());

@@ -22,6 +22,7 @@ const ProxMockXrControl& mock_control();
 
 struct XrAppOptions {
   bool timespec = true;  // enable XR_KHR_convert_timespec_time
+  uint32_t habits = 0;   // the mock runtime's PROX_MOCK_XR_HABIT_*
 };
 
 class XrApp {
@@ -31,14 +32,23 @@ class XrApp {
   XrApp(const XrApp&) = delete;
   XrApp& operator=(const XrApp&) = delete;
 
-  // One frame: poll events (forwarding each state to `device` when set),
-  // then, while the session runs, wait, begin, sync, OnFrame and end.
+  // One frame: poll events (forwarding each state, and each event's time
+  // when it has one, to `device` when set), then, while the session runs,
+  // wait, begin, sync, OnFrame and end; headless as XR_MND_headless allows
+  // once a wait returns no display time: no frame calls from then on, a
+  // sync and a sleep of a 90 Hz frame.
   void frame();
   // Frames until done() or `seconds` pass; whether done() became true.
   bool pump_until(const std::function<bool()>& done, double seconds = 20.0);
   void pump_for(double seconds);
 
-  void set_device(proxXrDeviceId device) { device_ = device; }
+  // Hands the device over (and, when the app knows one, "now" as the
+  // runtime's time: see runtime_now).
+  void set_device(proxXrDeviceId device);
+  // The newest event time advanced by the app's monotonic clock since it
+  // was polled: a headless app's clock on a runtime with no other; 0 before
+  // any event had a time.
+  XrTime runtime_now() const;
   proxXrDeviceDef device_def() const;
   // Ends the session (xrRequestExitSession, then the frames until EXITING).
   void exit_session();
@@ -55,6 +65,9 @@ class XrApp {
   XrSessionState state = XR_SESSION_STATE_UNKNOWN;
   bool running = false;
   int syncsNotFocused = 0;
+  bool frameCalls = true;     // false once xrWaitFrame gave no display time
+  XrTime lastEventTime = 0;   // the newest event time > 0
+  double lastEventPolled = 0;  // when (steady clock, s)
   std::string validationLog;        // the core validation layer's output file
   std::size_t validationStart = 0;  // its size when this app began
 

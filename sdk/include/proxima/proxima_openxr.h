@@ -39,6 +39,24 @@ typedef enum proxXrPoseMode {
   PROX_XR_POSE_MODE_FORCE32 = 0x7FFFFFFF
 } proxXrPoseMode;
 
+/* Where the device's "now" (an XrTime) comes from, first that has one:
+ * the app's time conversion extension, the frames the app reports, else
+ * the device's own monotonic clock (docs/openxr.md, "Threads and time"). */
+typedef enum proxXrTimeSource {
+  /* No time yet: no locate, the tick counts as untracked. */
+  PROX_XR_TIME_NONE = 0,
+  /* XR_KHR_convert_timespec_time (def.timespecTime). */
+  PROX_XR_TIME_TIMESPEC = 1,
+  /* XR_KHR_win32_convert_performance_counter_time (def.win32PerformanceCounterTime). */
+  PROX_XR_TIME_WIN32_PERFORMANCE_COUNTER = 2,
+  /* The last predicted display time (proxXrDevice_OnFrame), advanced by the monotonic clock. */
+  PROX_XR_TIME_FRAMES = 3,
+  /* The device's monotonic clock from the newest time the runtime accepted
+   * (a locate that succeeded, def.runtimeTime, proxXrDevice_OnRuntimeTime). */
+  PROX_XR_TIME_OWN_CLOCK = 4,
+  PROX_XR_TIME_SOURCE_FORCE32 = 0x7FFFFFFF
+} proxXrTimeSource;
+
 typedef struct proxXrDeviceDef {
   PFN_xrGetInstanceProcAddr getInstanceProcAddr; /* the app's: every call goes through it */
   XrInstance instance;
@@ -61,6 +79,13 @@ typedef struct proxXrDeviceDef {
                            0.02) */
   double maxExtrapolation; /* s: PROX_XR_EXTRAPOLATE_FRAME predicts at most this far (default 0.05) */
   int32_t internalValue;   /* do not touch */
+  /* Windows: the app enabled XR_KHR_win32_convert_performance_counter_time,
+   * "now" comes from it (default 0; refused elsewhere). */
+  proxBool win32PerformanceCounterTime;
+  /* An XrTime the runtime gave the app or accepted from it, about now (as
+   * for proxXrDevice_OnRuntimeTime), or 0 (default): a device with no other
+   * source of "now" has a clock from its first tick. */
+  XrTime runtimeTime;
 } proxXrDeviceDef;
 
 typedef struct proxXrDeviceStats {
@@ -74,10 +99,12 @@ typedef struct proxXrDeviceStats {
       vibrationsRefused;   /* ... that failed (XR_SESSION_NOT_FOCUSED and the like): counted, never fatal */
   uint64_t stopsSent;      /* xrStopHapticFeedback calls (contact ended, focus lost, destroyed) */
   uint64_t posesPushed;    /* poses handed to the haptic loop */
-  proxBool timeFromFrames; /* "now" is anchored on the last predicted display time (no timespec extension) */
+  proxBool timeFromFrames; /* "now" is anchored on the last predicted display time (timeSource is
+                              PROX_XR_TIME_FRAMES) */
   int32_t lastXrResult;    /* the last failing OpenXR result, or XR_SUCCESS */
   float lastAmplitude;     /* the last amplitude sent */
   XrSessionState sessionState; /* as last forwarded */
+  proxXrTimeSource timeSource; /* where the last tick's "now" came from */
 } proxXrDeviceStats;
 
 PROX_API proxXrDeviceDef proxDefaultXrDeviceDef(void);
@@ -88,9 +115,17 @@ PROX_API proxResult proxWorld_CreateXrDevice(proxWorldId world, const proxXrDevi
                                              proxXrDeviceId* device);
 /* Forward every session state change the app polls. The game thread. */
 PROX_API proxResult proxXrDevice_OnSessionState(proxXrDeviceId device, XrSessionState state);
-/* Once a frame, after xrWaitFrame and xrSyncActions. The game thread. */
+/* Once a frame, after xrWaitFrame and xrSyncActions, with a predicted
+ * display time > 0 (a headless runtime that returns 0 has no frame to
+ * report: skip the call). The game thread. */
 PROX_API proxResult proxXrDevice_OnFrame(proxXrDeviceId device, XrTime predictedDisplayTime,
                                          XrDuration predictedDisplayPeriod);
+/* Optional: an XrTime the runtime gave the app or accepted from it, about
+ * now (an event's time > 0, the time of a locate that just succeeded). The
+ * device's last resort for "now" when the runtime offers neither time
+ * conversion extension and no predicted display time: it runs its own
+ * monotonic clock from the newest such time. The game thread. */
+PROX_API proxResult proxXrDevice_OnRuntimeTime(proxXrDeviceId device, XrTime time);
 /* The def that attaches it with proxBody_SetDevice. The game thread. */
 PROX_API proxResult proxXrDevice_GetDeviceDef(proxXrDeviceId device, proxDeviceDef* def);
 /* Any thread. */

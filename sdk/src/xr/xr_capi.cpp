@@ -73,6 +73,7 @@ void check_def(const proxXrDeviceDef& d) {
   if (d.maxExtrapolation < 0.0) fail(PROX_ERROR_INVALID_ARGUMENT, "def->maxExtrapolation must be >= 0 s");
   if (!valid_state(d.sessionState))
     fail(PROX_ERROR_INVALID_ARGUMENT, "def->sessionState is not an XrSessionState");
+  if (d.runtimeTime < 0) fail(PROX_ERROR_INVALID_ARGUMENT, "def->runtimeTime must be >= 0 (0: none)");
 }
 
 // The def's poses, normalised (the device thread composes them every tick).
@@ -114,6 +115,26 @@ proxResult proxWorld_CreateXrDevice(proxWorldId world, const proxXrDeviceDef* de
     s.fn.stopHaptic = resolve<PFN_xrStopHapticFeedback>(*def, "xrStopHapticFeedback");
     s.fn.createActionSpace = resolve<PFN_xrCreateActionSpace>(*def, "xrCreateActionSpace");
     s.fn.destroySpace = resolve<PFN_xrDestroySpace>(*def, "xrDestroySpace");
+#if defined(_WIN32)
+    if (def->timespecTime)
+      fail(PROX_ERROR_INVALID_ARGUMENT,
+           "def->timespecTime is set on Windows: use def->win32PerformanceCounterTime with "
+           "XR_KHR_win32_convert_performance_counter_time");
+    if (def->win32PerformanceCounterTime) {
+      // Trusted, not tried, as the timespec function is elsewhere.
+      s.fn.convertWin32 =
+          resolve<PFN_xrVoidFunction>(*def, "xrConvertWin32PerformanceCounterToTimeKHR", false);
+      if (!s.fn.convertWin32)
+        fail(PROX_ERROR_INVALID_ARGUMENT,
+             "def->win32PerformanceCounterTime is set but xrConvertWin32PerformanceCounterToTimeKHR is not "
+             "available: enable XR_KHR_win32_convert_performance_counter_time in xrCreateInstance, or leave "
+             "def->win32PerformanceCounterTime 0");
+    }
+#else
+    if (def->win32PerformanceCounterTime)
+      fail(PROX_ERROR_INVALID_ARGUMENT,
+           "def->win32PerformanceCounterTime is set, but XR_KHR_win32_convert_performance_counter_time is "
+           "Windows only: use def->timespecTime with XR_KHR_convert_timespec_time here");
     if (def->timespecTime) {
       s.fn.convertTimespec =
           resolve<decltype(s.fn.convertTimespec)>(*def, "xrConvertTimespecTimeToTimeKHR", false);
@@ -125,6 +146,7 @@ proxResult proxWorld_CreateXrDevice(proxWorldId world, const proxXrDeviceDef* de
              "def->timespecTime is set but xrConvertTimespecTimeToTimeKHR is not available: enable "
              "XR_KHR_convert_timespec_time in xrCreateInstance, or leave def->timespecTime 0");
     }
+#endif
     // Poses and vibrations go through a streamed device that holds the last
     // pose (the device thread pushes one every tick).
     proxStreamDeviceDef stream_def = proxDefaultStreamDeviceDef();
@@ -156,6 +178,7 @@ proxResult proxWorld_CreateXrDevice(proxWorldId world, const proxXrDeviceDef* de
     slot.generation += 1;
     slot.owner = std::this_thread::get_id();
     slot.device = std::make_unique<xr::XrDevice>(s);
+    if (def->runtimeTime > 0) slot.device->on_runtime_time(def->runtimeTime, runtime::stream_clock());
     slot.device->start();
     *device = {std::uint32_t(i + 1), slot.generation};
   });
@@ -178,6 +201,17 @@ proxResult proxXrDevice_OnFrame(proxXrDeviceId device, XrTime predictedDisplayTi
     if (predictedDisplayTime <= 0) fail(PROX_ERROR_INVALID_ARGUMENT, "predictedDisplayTime must be > 0");
     if (predictedDisplayPeriod < 0) fail(PROX_ERROR_INVALID_ARGUMENT, "predictedDisplayPeriod must be >= 0");
     s.device->on_frame(predictedDisplayTime, predictedDisplayPeriod, runtime::stream_clock());
+  });
+}
+
+proxResult proxXrDevice_OnRuntimeTime(proxXrDeviceId device, XrTime time) {
+  return guard("proxXrDevice_OnRuntimeTime", [&] {
+    std::lock_guard<std::mutex> lock(g_xr_mutex);
+    XrSlot& s = slot_of(device);
+    if (time <= 0)
+      fail(PROX_ERROR_INVALID_ARGUMENT,
+           "time must be > 0: an XrTime the runtime gave (an event's time) or accepted (a locate's)");
+    s.device->on_runtime_time(time, runtime::stream_clock());
   });
 }
 

@@ -9,11 +9,18 @@
 #include <cmath>
 #include <ctime>
 
+#if defined(_WIN32)
+#define NOMINMAX  // std::min and std::clamp stay usable
+#include <windows.h>
+#endif
+
 namespace prox::xr {
 namespace {
 
 glm::dquat quat(const proxQuat& q) { return glm::dquat(q.w, q.x, q.y, q.z); }
 glm::dvec3 vec(const proxVec3& v) { return {v.x, v.y, v.z}; }
+
+XrTime ns(double seconds) { return XrTime(std::llround(seconds * 1e9)); }
 
 bool finite(const double* v, int n) {
   for (int i = 0; i < n; ++i)
@@ -57,24 +64,59 @@ void XrDevice::run() {
   if (vibrating_ && state_.load() == XR_SESSION_STATE_FOCUSED) stop_vibration();
 }
 
-// "Now" as an XrTime: from the timespec extension when the app enabled it,
-// else anchored on the last predicted display time the app reported.
+void XrDevice::on_runtime_time(XrTime time, double clock_now) {
+  if (time <= runtime_time_given_) return;  // the newest only: times never run back
+  runtime_time_given_ = time;
+  runtime_time_.store({time, clock_now});
+}
+
+// "Now" from the app's time conversion extension; false without one, or
+// when the runtime refuses the conversion (recorded in lastXrResult).
+bool XrDevice::convert_now(XrTime* time, proxXrTimeSource* source) {
+  XrResult r = XR_ERROR_FUNCTION_UNSUPPORTED;
+#if defined(_WIN32)
+  if (!settings_.fn.convertWin32) return false;
+  using Convert = XrResult(XRAPI_PTR*)(XrInstance, const LARGE_INTEGER*, XrTime*);
+  LARGE_INTEGER counter;
+  QueryPerformanceCounter(&counter);
+  r = reinterpret_cast<Convert>(settings_.fn.convertWin32)(settings_.def.instance, &counter, time);
+  *source = PROX_XR_TIME_WIN32_PERFORMANCE_COUNTER;
+#else
+  if (!settings_.fn.convertTimespec) return false;
+  timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  r = settings_.fn.convertTimespec(settings_.def.instance, &ts, time);
+  *source = PROX_XR_TIME_TIMESPEC;
+#endif
+  if (XR_SUCCEEDED(r) && *time > 0) return true;
+  if (XR_FAILED(r)) fail_result(r);
+  return false;
+}
+
+// "Now" as an XrTime, from the first source that has one: the app's time
+// conversion extension; the last predicted display time the app reported,
+// advanced by the monotonic clock; else the device's own monotonic clock
+// from the newest time the runtime accepted (a locate of its own that
+// succeeded, or a time the app handed over). A runtime that has no time
+// to give, or stops giving it, costs no pose once it accepted one.
 bool XrDevice::now_xr(double clock, XrTime* time) {
-  if (settings_.fn.convertTimespec) {
-    timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    const XrResult r = settings_.fn.convertTimespec(settings_.def.instance, &ts, time);
-    if (XR_FAILED(r)) {
-      fail_result(r);
-      return false;
+  proxXrTimeSource source = PROX_XR_TIME_NONE;
+  *time = 0;
+  if (!convert_now(time, &source)) {
+    source = PROX_XR_TIME_NONE;
+    const Frame f = frame_.load();
+    const Anchor given = runtime_time_.load();
+    const Anchor& own = given.clock > accepted_.clock ? given : accepted_;  // the newer news
+    if (f.predicted > 0) {
+      *time = f.predicted + ns(clock - f.clock);
+      source = PROX_XR_TIME_FRAMES;
+    } else if (own.time > 0) {
+      *time = own.time + ns(clock - own.clock);
+      source = PROX_XR_TIME_OWN_CLOCK;
     }
-    return true;
   }
-  time_from_frames_.store(true, std::memory_order_relaxed);
-  const Frame f = frame_.load();
-  if (f.predicted <= 0) return false;
-  *time = f.predicted + XrTime(std::llround((clock - f.clock) * 1e9));
-  return *time > 0;
+  time_source_.store(source, std::memory_order_relaxed);
+  return source != PROX_XR_TIME_NONE && *time > 0;
 }
 
 bool XrDevice::locate(XrTime time, Located* out, bool with_velocity) {
@@ -192,20 +234,21 @@ void XrDevice::tick() {
   ticks_.fetch_add(1, std::memory_order_relaxed);
   const XrSessionState state = state_.load(std::memory_order_acquire);
   if (state != XR_SESSION_STATE_FOCUSED) {
-    // No pose (the stream goes stale and the force fades) and no call: the
-    // runtime stops haptics itself when focus goes.
+    // No pose (the stream goes stale and the force fades) and no call, but
+    // for one stop of a vibration that plays: not every runtime stops
+    // haptics itself when focus goes (stock Monado lets them play).
     not_focused_.fetch_add(1, std::memory_order_relaxed);
-    vibrating_ = false;
+    if (vibrating_) stop_vibration();
     frame_grip_.valid = false;
     return;
   }
   const double clock = runtime::stream_clock();
   XrTime now = 0;
   bool tracked = now_xr(clock, &now);
-  if (tracked && settings_.def.poseMode == PROX_XR_EXTRAPOLATE_FRAME) {
-    std::uint64_t version = 0;
-    const Frame f = frame_.load(&version);
-    if (version != frame_seen_ && f.predicted > 0) {
+  std::uint64_t version = 0;
+  const Frame f = frame_.load(&version);
+  if (tracked && settings_.def.poseMode == PROX_XR_EXTRAPOLATE_FRAME && f.predicted > 0) {
+    if (version != frame_seen_) {
       frame_seen_ = version;
       locate(f.predicted, &frame_grip_, true);
     }
@@ -216,9 +259,14 @@ void XrDevice::tick() {
       push(frame_grip_, ahead, clock);
     }
   } else if (tracked) {
+    // Each tick; and PROX_XR_EXTRAPOLATE_FRAME while the app reports no
+    // frame (a headless runtime whose display times are 0).
     Located grip;
     tracked = locate(now, &grip, false);
-    if (tracked) push(grip, 0.0, clock);
+    if (tracked) {
+      accepted_ = {now, clock};
+      push(grip, 0.0, clock);
+    }
   }
   if (!tracked) untracked_.fetch_add(1, std::memory_order_relaxed);
   vibrate(clock);
@@ -234,7 +282,8 @@ proxXrDeviceStats XrDevice::stats() const {
   s.vibrationsRefused = refused_.load(std::memory_order_relaxed);
   s.stopsSent = stops_.load(std::memory_order_relaxed);
   s.posesPushed = pushed_.load(std::memory_order_relaxed);
-  s.timeFromFrames = time_from_frames_.load(std::memory_order_relaxed) ? 1 : 0;
+  s.timeSource = time_source_.load(std::memory_order_relaxed);
+  s.timeFromFrames = s.timeSource == PROX_XR_TIME_FRAMES ? 1 : 0;
   s.lastXrResult = last_result_.load(std::memory_order_relaxed);
   s.lastAmplitude = last_amplitude_.load(std::memory_order_relaxed);
   s.sessionState = state_.load(std::memory_order_relaxed);

@@ -31,6 +31,10 @@ struct XrFunctions {
   // XR_KHR_convert_timespec_time (its PFN is in openxr_platform.h behind
   // XR_USE_TIMESPEC); null without the extension.
   XrResult(XRAPI_PTR* convertTimespec)(XrInstance, const struct timespec*, XrTime*) = nullptr;
+  // Windows: xrConvertWin32PerformanceCounterToTimeKHR (its PFN needs
+  // windows.h's LARGE_INTEGER, so it is cast where it is called); null
+  // without the extension.
+  PFN_xrVoidFunction convertWin32 = nullptr;
 };
 
 struct XrSettings {
@@ -53,6 +57,9 @@ class XrDevice {
 
   void on_session_state(XrSessionState state) { state_.store(state, std::memory_order_release); }
   void on_frame(XrTime predicted, XrDuration period, double clock_now);
+  // An XrTime the runtime gave or accepted, about `clock_now` (the game
+  // thread: one writer).
+  void on_runtime_time(XrTime time, double clock_now);
   proxXrDeviceStats stats() const;
   const XrSettings& settings() const { return settings_; }
 
@@ -61,6 +68,11 @@ class XrDevice {
     XrTime predicted = 0;
     XrDuration period = 0;
     double clock = 0.0;  // stream clock when the app reported it
+  };
+  // An XrTime and the stream clock it was "now" at.
+  struct Anchor {
+    XrTime time = 0;
+    double clock = 0.0;
   };
   // The grip located once a frame (PROX_XR_EXTRAPOLATE_FRAME).
   struct Located {
@@ -75,6 +87,7 @@ class XrDevice {
   void run();
   void tick();
   bool now_xr(double clock, XrTime* time);
+  bool convert_now(XrTime* time, proxXrTimeSource* source);
   bool locate(XrTime time, Located* out, bool with_velocity);
   void push(const Located& grip, double seconds_ahead, double clock);
   void vibrate(double clock);
@@ -85,16 +98,19 @@ class XrDevice {
   std::thread thread_;
   std::atomic<bool> running_{false};
   std::atomic<XrSessionState> state_;
-  runtime::SeqLock<Frame> frame_;  // game -> device thread
+  runtime::SeqLock<Frame> frame_;           // game -> device thread
+  runtime::SeqLock<Anchor> runtime_time_;   // game -> device thread (proxXrDevice_OnRuntimeTime)
+  XrTime runtime_time_given_ = 0;           // the game thread's: the newest handed over
   // The device thread's own.
   std::uint64_t frame_seen_ = 0;
   Located frame_grip_;
+  Anchor accepted_;  // the newest "now" a locate succeeded at
   bool vibrating_ = false;
   double last_send_ = -1e9;
   // Counters (written by the device thread, read by GetStats).
   std::atomic<std::uint64_t> ticks_{0}, locates_{0}, untracked_{0}, not_focused_{0}, sent_{0}, refused_{0},
       stops_{0}, pushed_{0};
-  std::atomic<bool> time_from_frames_{false};
+  std::atomic<proxXrTimeSource> time_source_{PROX_XR_TIME_NONE};
   std::atomic<int32_t> last_result_{XR_SUCCESS};
   std::atomic<float> last_amplitude_{0.0f};
 };
