@@ -287,8 +287,9 @@ PROX_API proxResult proxBody_GetPose(proxBodyId body, proxPose* pose);
 /* A tool's proxy: where it is rendered and where its contacts, distances and
  * intersections are computed. A constrained tool's proxy stays outside the
  * other bodies while proxBody_GetPose gives its device pose; a free tool's
- * proxy is its pose. Game thread; while the threads run, local tracking's
- * latest. */
+ * proxy is its pose. Game thread; while the threads run, the haptic loop's
+ * latest (its contacts are local tracking's, at the proxy that thread
+ * verified, up to about a safety distance behind: docs/coupling.md). */
 PROX_API proxResult proxBody_GetProxyPose(proxBodyId tool, proxPose* pose);
 
 /* ---- stepping and results ---------------------------------------------------- */
@@ -696,7 +697,7 @@ typedef enum proxHapticFlag {
 typedef struct proxHapticSample {
   double time;          /* s since the threads started */
   proxPose devicePose;  /* the device's pose this tick (the game's, for a tool no device holds) */
-  proxPose proxyPose;   /* the pose the force was rendered against: a constrained tool's proxy, else devicePose */
+  proxPose proxyPose;   /* a constrained tool's proxy this tick (never closer than the safety distance), else devicePose */
   proxVec3 force;       /* N, what the device was handed (after the safety gate) */
   proxVec3 torque;      /* N m */
   int32_t contactCount; /* contacts rendered this tick (0 when faded) */

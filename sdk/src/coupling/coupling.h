@@ -87,6 +87,11 @@ class OffsetRate {
   const Twist& update(const Twist& offset, double dt);
   const Twist& rate() const { return rate_; }
   void reset() { has_last_ = false, rate_ = Twist{}; }
+  // Takes `offset` as the last one without a rate from it: the offset
+  // jumped for a reason that is no motion (a new constraint set).
+  void rebase(const Twist& offset) {
+    if (has_last_) last_ = offset;
+  }
 
  private:
   static constexpr double kTimeConstant = 0.002;  // s: a first-order low-pass

@@ -11,11 +11,6 @@
 namespace prox::coupling {
 namespace {
 
-// The solve holds the proxy this fraction beyond the safety distance: the
-// linearisation's second-order error (rotation, curvature) then rarely takes
-// the exact distance below it, and the clearance it leaves is what lets the
-// next step slide (a step is bounded by the clearances at both ends).
-constexpr double kTargetMargin = 1.0;
 constexpr int kMaxHalvings = 8;
 // Steps shorter than this share of the safety distance are not taken.
 constexpr double kNegligibleStep = 1e-3;
@@ -78,7 +73,7 @@ void update(const CouplingSettings& coupling, const ProxySettings& settings, con
     ++stats.distance_checks;
   }
   const Twist desired = twist_between(state.pose, device, tool.reference_local);
-  const double target = ds * (1.0 + kTargetMargin);
+  const double target = target_distance(ds);
   const auto solve_start = Clock::now();
   const Twist u = solve_step(coupling, desired, state.constraints, target, max_step, state.lambda);
   stats.solve_seconds = seconds_since(solve_start);

@@ -26,6 +26,13 @@ struct ProxyTool {
   double radius = 0.0;  // of the tool's bounds about the reference point
 };
 
+// The distance the proxy's solve holds it at: the safety distance and as
+// much again. The linearisation's second-order error (rotation, curvature)
+// then rarely takes the exact distance below the safety distance, and the
+// clearance it leaves is what lets the next step slide (a step is bounded
+// by the clearances at both ends).
+inline double target_distance(double safety_distance) { return 2.0 * safety_distance; }
+
 struct ProxySettings {
   double safety_distance = 0.0005;  // the proxy's exact distance never goes below this
   double cutoff = 0.005;            // the LMDs' cutoff: the constraints cover what is closer

@@ -41,6 +41,9 @@ class TripleBuffer {
     return true;
   }
 
+  // Whether update() would take a newer buffer (the reader's question).
+  bool fresh() const { return (middle_.load(std::memory_order_relaxed) & kFresh) != 0; }
+
   // The reader's buffer: the newest as of the last update().
   const T& front() const { return buffers_[front_]; }
   T& front_mutable() { return buffers_[front_]; }

@@ -52,7 +52,9 @@ std::uint64_t snapshot_checksum(const ContactSnapshot& snapshot) {
   std::uint64_t h = snapshot.sequence * 0x9E3779B97F4A7C15ull ^ snapshot.contacts.size();
   for (const HapticContact& c : snapshot.contacts)
     h = (h ^ bits(c.distance) ^ (bits(c.tool_point_local.x) << 1) ^ bits(c.other_point.y)) * 0x100000001B3ull;
-  return h ^ bits(snapshot.time) ^ bits(snapshot.tool_pose.translation.x);
+  for (const coupling::ProxyConstraint& c : snapshot.constraints)
+    h = (h ^ bits(c.distance) ^ (bits(c.normal.x) << 1) ^ bits(c.arm.y)) * 0x100000001B3ull;
+  return h ^ bits(snapshot.time) ^ bits(snapshot.tool_pose.translation.x) ^ (bits(snapshot.reach) << 3);
 }
 
 Wrench evaluate_contacts(const ForceSettings& settings, const ContactSnapshot& snapshot, const Pose& pose,
@@ -69,6 +71,30 @@ Wrench evaluate_contacts(const ForceSettings& settings, const ContactSnapshot& s
   }
   if (closest) *closest = least;
   return sum.finish(settings);
+}
+
+Wrench ContinuityFilter::step(const Wrench& instantaneous, double dt) {
+  if (dt > 0.0 && std::isfinite(dt)) {
+    // x'' = -2 x' / T - x / T^2, solved exactly over dt.
+    constexpr double T = kTimeConstant;
+    const double k = std::exp(-dt / T);
+    auto advance = [&](Vec3& x, Vec3& v) {
+      const Vec3 b = v + x / T;
+      x = (x + b * dt) * k;
+      v = (v - b * (dt / T)) * k;
+    };
+    advance(carried_.force, rate_.force);
+    advance(carried_.torque, rate_.torque);
+  }
+  const double T = kTimeConstant;
+  if (!finite(carried_.force) || !finite(carried_.torque) || !finite(rate_.force) || !finite(rate_.torque) ||
+      (glm::length(carried_.force) < kZero && glm::length(carried_.torque) < kZero &&
+       glm::length(rate_.force) * T < kZero && glm::length(rate_.torque) * T < kZero))
+    reset();
+  Wrench out = instantaneous;
+  out.force += carried_.force;
+  out.torque += carried_.torque;
+  return out;
 }
 
 double closest_tracked_distance(const ContactSnapshot& snapshot) {

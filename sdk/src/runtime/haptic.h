@@ -5,6 +5,7 @@
 
 #include "contact/force.h"
 #include "contact/pose.h"
+#include "coupling/coupling.h"
 
 #include <cstdint>
 #include <vector>
@@ -37,6 +38,12 @@ struct ContactSnapshot {
   double time = 0.0;                    // steady-clock seconds when tracked
   std::uint64_t sequence = 0;           // 0: nothing published yet
   std::uint32_t dropped = 0;            // contacts beyond the capacity
+  // A constrained tool's: tool_pose is its verified proxy, these are the
+  // constraints tracked there (reserved like `contacts`), and `reach` how
+  // far from it the haptic tick may move the proxy unchecked
+  // (coupling/haptic_proxy.h).
+  std::vector<coupling::ProxyConstraint> constraints;
+  double reach = 0.0;
   std::uint64_t checksum = 0;           // snapshot_checksum(), set last by the writer
 };
 
@@ -62,6 +69,37 @@ double closest_tracked_distance(const ContactSnapshot& snapshot);
 // the largest distance any point of the tool within `radius` of its
 // reference point has moved (translation plus rotation times radius).
 double pose_displacement(const Pose& from, const Pose& to, const Vec3& reference_point_local, double radius);
+
+// A free tool's force continuous in time (docs/haptic-fidelity.md): when a
+// new snapshot replaces the old one, the contacts it adds or drops inside
+// the cutoff (and the patch weights it changes) would step the force by the
+// difference between the two sets at the same pose. That difference is
+// carried over and fades out as a critically damped spring does, so a
+// contact born inside the cutoff fades in, one lost there fades out, with
+// no corner: a step s fades as s (1 + t/T) exp(-t/T), whose steepest change
+// is s / (e T), 0.055 N a millisecond for a 3 N step. The rendered force
+// differs from the instantaneous one by the carried part alone: at most the
+// sum of the recent switches' steps, each shrinking as above (to 10% in
+// 3.9 T, 1% in 6.6 T), and exactly zero once below kZero.
+class ContinuityFilter {
+ public:
+  static constexpr double kTimeConstant = 0.02;  // s: T
+  static constexpr double kZero = 1e-7;          // N (and N m): below it, carried is dropped
+  // A switch at this tick: what the old and the new contacts give at this
+  // tick's pose.
+  void switched(const Wrench& old_contacts, const Wrench& new_contacts) {
+    carried_.force += old_contacts.force - new_contacts.force;
+    carried_.torque += old_contacts.torque - new_contacts.torque;
+  }
+  // The wrench to render after `dt` s: `instantaneous` and what is carried,
+  // the carried part faded by dt first.
+  Wrench step(const Wrench& instantaneous, double dt);
+  const Wrench& carried() const { return carried_; }
+  void reset() { carried_ = rate_ = Wrench{}; }
+
+ private:
+  Wrench carried_, rate_;  // the part carried over and its rate of change (per s)
+};
 
 // The last gate before a device: whatever comes in (NaN, a spike, nothing),
 // what goes out is finite, within the maxima, and changes by at most the

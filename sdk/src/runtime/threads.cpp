@@ -9,6 +9,7 @@
 #include <string>
 #include <system_error>
 
+#include "coupling/haptic_proxy.h"
 #include "runtime/platform.h"
 
 namespace prox::runtime {
@@ -87,6 +88,7 @@ Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), 
     tool->constrained = b.tool.mode == coupling::ToolMode::Constrained;
     tool->coupling = b.tool.coupling;
     tool->proxy.store({b.pose, 0.0});
+    tool->rendered.store({b.pose, 0.0});
     tool->proxy_state.pose = b.pose;
     tool->anchor = b.pose;
     tool->wrench.store({b.wrench});
@@ -94,9 +96,13 @@ Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), 
     // The haptic loop's snapshots never grow once the threads run. Clamped
     // to the range check() accepts, for a Threads constructed without asking
     // it first (World::start_threads asks).
-    for (int k = 0; k < 3; ++k)
-      tool->snapshots.buffer(k).contacts.reserve(
-          static_cast<std::size_t>(std::clamp(settings_.max_contacts, 1, kMaxContactsPerTool)));
+    const auto capacity = static_cast<std::size_t>(std::clamp(settings_.max_contacts, 1, kMaxContactsPerTool));
+    for (int k = 0; k < 3; ++k) {
+      tool->snapshots.buffer(k).contacts.reserve(capacity);
+      if (tool->constrained) tool->snapshots.buffer(k).constraints.reserve(capacity);
+    }
+    tool->renderer = HapticRenderer({world.settings_.force, tool->constrained, tool->coupling,
+                                     tool->reference_local, tool->radius, capacity});
     if (settings_.trace_capacity > 0)
       tool->trace = std::make_unique<TraceRing<TraceSample>>(
           static_cast<std::size_t>(std::min(settings_.trace_capacity, kMaxTraceCapacity)));
@@ -332,6 +338,9 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
   }
   std::uint32_t flags = ok ? 0u : kTraceNoPose;
 
+  // The contacts about to be replaced: what they give at this pose, so
+  // that the switch is no step (only on the ticks a new snapshot comes).
+  if (ok && tool.snapshots.fresh()) tool.renderer.replacing(tool.snapshots.front(), sample.pose);
   tool.snapshots.update();
   const ContactSnapshot& snapshot = tool.snapshots.front();
   bool valid = ok && snapshot.sequence > 0;
@@ -344,25 +353,14 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
       pose_displacement(snapshot.tool_pose, sample.pose, tool.reference_local, tool.radius) >
           settings_.trust_distance)
     count(untrusted_ticks_), valid = false, flags |= kTraceUntrusted;
-  Wrench target;
   // A tick whose contacts are not trusted (stale, left behind, no pose this
   // tick) tells the device the last trusted distance: a stall of the
   // tracking thread is not the contact going away.
   double closest = snapshot.sequence > 0 ? tool.closest : kNoContact;
-  if (tool.constrained) {
-    // The spring-damper from the device pose to the proxy the snapshot was
-    // tracked at.
-    const coupling::Twist offset =
-        coupling::twist_between(sample.pose, snapshot.tool_pose, tool.reference_local);
-    const coupling::Twist& rate = tool.offset_rate.update(offset, valid ? dt : 0.0);
-    if (valid) {
-      target = coupling::coupling_wrench(tool.coupling, sample.pose, snapshot.tool_pose, tool.reference_local,
-                                         rate);
-      closest = closest_tracked_distance(snapshot);
-    }
-  } else if (valid) {
-    target = evaluate_contacts(world_.settings_.force, snapshot, sample.pose, tool.reference_local, &closest);
-  }
+  Pose proxy;
+  const Wrench target =
+      tool.renderer.render(snapshot, sample.pose, dt, valid, tool.filter.output(), &proxy, &closest);
+  if (tool.constrained && valid) tool.rendered.store({proxy, t});
   tool.closest = closest;
   bool limited = false;
   const Wrench w = tool.filter.step(target, valid, dt, &limited);
@@ -375,8 +373,8 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
   if (tool.trace) {
     if (limited) flags |= kTraceClipped;
     if (!valid) flags |= kTraceFaded;
-    const Pose proxy = tool.constrained && snapshot.sequence > 0 ? snapshot.tool_pose : tool.pose.load().pose;
-    record(tool, t, ok ? sample.pose : tool.pose.load().pose, proxy, w, closest,
+    record(tool, t, ok ? sample.pose : tool.pose.load().pose, tool.constrained ? proxy : tool.pose.load().pose,
+           w, closest,
            valid ? static_cast<std::uint32_t>(snapshot.contacts.size()) : 0u, flags);
   }
 }
@@ -396,224 +394,6 @@ void Threads::record(Tool& tool, double t, const Pose& device, const Pose& proxy
   tool.trace->push(s);
 }
 
-// ---- local tracking ----------------------------------------------------------------
-
-void Threads::local_main() {
-  configure(Role::Local);
-  const double period = settings_.local_rate > 0.0 ? 1.0 / settings_.local_rate : 0.0;
-  double deadline = now(), previous = -1.0;
-  std::vector<const LmdPair*> scratch;
-  while (!stop_.load(std::memory_order_relaxed)) {
-    if (wait_while_stalled(Role::Local)) {
-      deadline = now();
-      previous = -1.0;
-      continue;
-    }
-    const double start = now();
-    for (auto& tool : tools_) track(*tool, scratch);
-    pace(Role::Local, period, start, previous, deadline);
-  }
-}
-
-void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
-  const World::BodySlot& tool_body = world_.bodies_[tool.body];
-  const World::MeshData& tool_mesh = *world_.meshes_[tool_body.mesh].data;
-  const Method method = world_.settings_.method;
-
-  // A new global result replaces the set of pairs; each pair's tracked LMDs
-  // join the global ones (the tracker's cache drops the duplicates). Patches
-  // are the exception: a tracked seed and a new one may stand for the same
-  // LMDs from two different minima of a flat field, and both would count
-  // them; the new patches replace the tracked ones.
-  const bool join_tracked = method == Method::Original || !world_.settings_.patches.enabled();
-  const bool adopted = tool.global.update();
-  if (adopted) {
-    const GlobalResult& g = tool.global.front();
-    std::vector<LocalPair> next(g.pairs.size());
-    for (std::size_t i = 0; i < g.pairs.size(); ++i) {
-      const GlobalPair& gp = g.pairs[i];
-      LocalPair& lp = next[i];
-      lp.other = gp.other;
-      lp.other_pose = gp.other_pose;
-      lp.lmds = gp.lmds;
-      if (method == Method::Original) lp.tracker = LocalTracker::original();
-      for (LocalPair& old : tool.local_pairs)
-        if (old.other == gp.other) {
-          lp.tracker = std::move(old.tracker);
-          if (join_tracked) lp.lmds.insert(lp.lmds.end(), old.lmds.begin(), old.lmds.end());
-          break;
-        }
-    }
-    tool.local_pairs = std::move(next);
-    tool.anchor = g.tool_pose;
-    tool.anchored = true;
-  }
-
-  PoseSample sample = tool.pose.load();
-  // Until the global search has seen the proxy nothing says what is near
-  // it: it waits.
-  if (tool.constrained && tool.anchored) move_proxy(tool, sample);
-  if (tool.constrained) {
-    sample.pose = tool.proxy_state.pose;  // contacts are tracked at the proxy
-  }
-  std::size_t total = 0;
-  std::uint32_t dropped = 0;
-  for (LocalPair& lp : tool.local_pairs) {
-    const World::BodySlot& other = world_.bodies_[lp.other];
-    const World::MeshData& other_mesh = *world_.meshes_[other.mesh].data;
-    const PairQuery q{&other_mesh.mesh,     other_mesh.snch.get(), lp.other_pose,          &tool_mesh.mesh,
-                      tool_mesh.snch.get(), sample.pose,           world_.settings_.cutoff};
-    LocalTrackingStats stats;
-    lp.tracker.update(q, lp.lmds, stats);
-    total += lp.lmds.size();
-    dropped += stats.dropped_out_of_range + stats.duplicates_dropped;
-  }
-  // Adopting a result drops the tracked LMDs it already has; that loses
-  // nothing.
-  if (dropped > 0 && !adopted) tool.losses.fetch_add(1, std::memory_order_relaxed);
-
-  // The snapshot for the haptic loop: the closest max_contacts contacts,
-  // the tool's points in its own frame.
-  scratch.clear();
-  for (const LocalPair& lp : tool.local_pairs)
-    for (const LmdPair& p : lp.lmds) scratch.push_back(&p);
-  ContactSnapshot& s = tool.snapshots.back();
-  const auto capacity = static_cast<std::size_t>(settings_.max_contacts);  // <= the reserved storage
-  if (scratch.size() > capacity) {
-    std::nth_element(scratch.begin(), scratch.begin() + static_cast<std::ptrdiff_t>(capacity), scratch.end(),
-                     [](const LmdPair* a, const LmdPair* b) { return a->distance < b->distance; });
-    scratch.resize(capacity);
-  }
-  const Pose to_local = sample.pose.inverse();
-  s.contacts.clear();
-  HapticContact c;
-  for (const LmdPair* p : scratch)
-    if (to_haptic_contact(*p, to_local, c)) s.contacts.push_back(c);
-  s.tool_pose = sample.pose;
-  s.time = sample.time;
-  s.sequence = ++tool.published;
-  s.dropped = static_cast<std::uint32_t>(total - scratch.size());
-  s.checksum = snapshot_checksum(s);
-  tool.snapshots.publish();
-  if (s.dropped) count(dropped_contacts_, s.dropped);
-
-  std::lock_guard<std::mutex> lock(results_mutex_);
-  tool.contacts.clear();
-  for (const LocalPair& lp : tool.local_pairs)
-    for (const LmdPair& p : lp.lmds) tool.contacts.push_back({lp.other, p});
-}
-
-void Threads::move_proxy(Tool& tool, const PoseSample& device) {
-  const World::BodySlot& tool_body = world_.bodies_[tool.body];
-  const World::MeshData& tool_mesh = *world_.meshes_[tool_body.mesh].data;
-  coupling::ProxyState& state = tool.proxy_state;
-  // The constraints: the pairs' LMDs, tracked at the proxy at the last
-  // update (or, just adopted, at the global search's pose).
-  state.constraints.clear();
-  tool.obstacles.clear();
-  const Vec3 reference = state.pose.apply(tool.reference_local);
-  coupling::ProxyConstraint c;
-  for (const LocalPair& lp : tool.local_pairs) {
-    for (const LmdPair& p : lp.lmds)
-      if (coupling::make_constraint(p, reference, c)) state.constraints.push_back(c);
-    const World::BodySlot& other = world_.bodies_[lp.other];
-    const World::MeshData& other_mesh = *world_.meshes_[other.mesh].data;
-    tool.obstacles.push_back({&other_mesh.mesh, other_mesh.snch.get(), lp.other_pose});
-  }
-  const coupling::ProxyTool proxy_tool{&tool_mesh.mesh, tool_mesh.snch.get(), tool.reference_local,
-                                       tool.radius};
-  const coupling::ProxySettings settings{world_.settings_.force.safety_distance, world_.settings_.cutoff};
-  coupling::ProxyStats stats;
-  // Bodies beyond the global search's range were farther than the cutoff
-  // from the anchor; the proxy stays close enough to it that they cannot
-  // come within the safety distance.
-  coupling::update_proxy(tool.coupling, settings, proxy_tool, tool.obstacles.data(), tool.obstacles.size(),
-                         device.pose, &tool.anchor, state, stats);
-  tool.proxy.store({state.pose, device.time});
-}
-
-// ---- global search -------------------------------------------------------------
-
-void Threads::global_main() {
-  configure(Role::Global);
-  const double period = settings_.global_rate > 0.0 ? 1.0 / settings_.global_rate : 0.0;
-  double deadline = now(), previous = -1.0;
-  PairMap pairs;
-  std::vector<PairInRange> in_range;
-  Broadphase broadphase;
-  std::vector<Pose> last_tool_pose(tools_.size());
-  std::vector<std::uint64_t> tool_version(tools_.size(), 0);
-  std::uint64_t sequence = 0;
-  while (!stop_.load(std::memory_order_relaxed)) {
-    if (wait_while_stalled(Role::Global)) {
-      deadline = now();
-      previous = -1.0;
-      continue;
-    }
-    const double start = now();
-    {
-      // The game thread's moves: copied (and the tree rebuilt) only when
-      // something other than a tool moved.
-      std::lock_guard<std::mutex> lock(world_.scene_mutex_);
-      world_.refresh_poses(broadphase);
-      world_.update_broadphase(broadphase, world_.scene_version_);
-    }
-    // The tools' poses from the haptic loop; a version that moves only when
-    // the pose does, so a still tool costs no search.
-    std::vector<BodyPose>& poses = broadphase.poses;
-    for (std::size_t k = 0; k < tools_.size(); ++k) {
-      // A constrained tool is searched where its proxy is.
-      const PoseSample sample = tools_[k]->constrained ? tools_[k]->proxy.load() : tools_[k]->pose.load();
-      const bool moved = std::memcmp(&sample.pose, &last_tool_pose[k], sizeof(Pose)) != 0;
-      if (moved || tool_version[k] == 0) ++tool_version[k], last_tool_pose[k] = sample.pose;
-      poses[tools_[k]->body] = {last_tool_pose[k], tool_version[k]};
-    }
-    StepStats stats;
-    for (std::size_t k = 0; k < tools_.size(); ++k) {
-      Tool* tool = tools_[k].get();
-      const int searched_before = stats.pairs_searched;
-      world_.search_tool(tool->body, broadphase, pairs, in_range, stats);
-      for (const PairInRange& p : in_range) stats.contacts += static_cast<int>(p.slot->lmds.size());
-      // Nothing searched, the same pairs in range and no LMDs lost since:
-      // the local thread already has this answer (and has tracked it
-      // further); don't make it merge the same set again.
-      const std::uint64_t losses = tool->losses.load(std::memory_order_relaxed);
-      bool same_pairs = in_range.size() == tool->published_others.size();
-      for (std::size_t i = 0; same_pairs && i < in_range.size(); ++i)
-        same_pairs = in_range[i].other == tool->published_others[i];
-      // A constrained tool's proxy must also learn that nothing is in range
-      // where it now is (its anchor moves with each result).
-      const bool proxy_moved = tool->constrained && tool->published_version != tool_version[k];
-      if (stats.pairs_searched == searched_before && same_pairs && !proxy_moved &&
-          losses == tool->published_losses)
-        continue;
-      tool->published_version = tool_version[k];
-      tool->published_losses = losses;
-      tool->published_others.clear();
-      for (const PairInRange& p : in_range) tool->published_others.push_back(p.other);
-      GlobalResult& r = tool->global.back();
-      r.pairs.resize(in_range.size());
-      for (std::size_t i = 0; i < in_range.size(); ++i) {
-        r.pairs[i].other = in_range[i].other;
-        r.pairs[i].other_pose = poses[in_range[i].other].pose;
-        r.pairs[i].lmds = in_range[i].slot->lmds;
-      }
-      r.tool_pose = poses[tool->body].pose;
-      r.sequence = ++sequence;
-      tool->global.publish();
-    }
-    World::prune(pairs);
-    stats.seconds = now() - start;
-    {
-      std::lock_guard<std::mutex> lock(results_mutex_);
-      step_stats_ = stats;
-    }
-    pace(Role::Global, period, start, previous, deadline);
-    // Nothing moved: nothing new to find. Idle a millisecond rather than spin.
-    if (period == 0.0 && stats.pairs_searched == 0) sleep_until(now() + 1e-3);
-  }
-}
-
 // ---- the game thread's side --------------------------------------------------------
 
 void Threads::set_tool_pose(std::uint32_t body, const Pose& pose) {
@@ -628,7 +408,7 @@ Pose Threads::tool_pose(std::uint32_t body) const {
 
 Pose Threads::proxy_pose(std::uint32_t body) const {
   const Tool& tool = *tools_[std::size_t(tool_of_body_[body])];
-  return tool.constrained ? tool.proxy.load().pose : tool.pose.load().pose;
+  return tool.constrained ? tool.rendered.load().pose : tool.pose.load().pose;
 }
 
 Wrench Threads::wrench(std::uint32_t body) const {

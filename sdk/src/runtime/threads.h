@@ -18,6 +18,7 @@
 #pragma once
 
 #include "runtime/handoff.h"
+#include "runtime/haptic_render.h"
 #include "runtime/haptic_trace.h"
 #include "runtime/haptic.h"
 #include "runtime/loop_stats.h"
@@ -112,7 +113,7 @@ class Threads {
   // Game thread.
   void set_tool_pose(std::uint32_t body, const Pose& pose);
   Pose tool_pose(std::uint32_t body) const;
-  // A constrained tool's proxy as local tracking last moved it; a free
+  // A constrained tool's proxy as the haptic loop last moved it; a free
   // tool's pose.
   Pose proxy_pose(std::uint32_t body) const;
   Wrench wrench(std::uint32_t body) const;
@@ -196,7 +197,8 @@ class Threads {
     bool anchored = false;                      // local's own: a global result adopted
     std::uint64_t published_version = 0;        // global's own: the tool pose version last handed over
     std::vector<coupling::Obstacle> obstacles;  // local's own
-    coupling::OffsetRate offset_rate;           // haptic's own
+    HapticRenderer renderer;                    // haptic's own
+    SeqLock<PoseSample> rendered;               // haptic -> game: the proxy at the haptic rate
     double closest = kNoContact;                // haptic's own: the last trusted tick's, for the device
     std::unique_ptr<TraceRing<TraceSample>> trace;  // haptic -> any; null when the recorder is off
     std::uint64_t ticks = 0;                        // haptic's own

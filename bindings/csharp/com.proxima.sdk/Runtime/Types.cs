@@ -258,7 +258,7 @@ namespace Proxima
     {
         public double Time;       // s since the threads started
         public Pose DevicePose;   // the device's (or the game's) pose this tick
-        public Pose ProxyPose;    // what the force was rendered against: a constrained tool's proxy
+        public Pose ProxyPose;    // a constrained tool's proxy this tick, else DevicePose
         public Vec3 Force;        // N, what the device was handed
         public Vec3 Torque;       // N m
         public int ContactCount;  // contacts rendered this tick

@@ -1,0 +1,300 @@
+// What the hand feels, tick by tick (docs/haptic-fidelity.md): a device of
+// the application's own (proxDeviceDef callbacks) moves the tool at a steady
+// hand speed and records every wrench the haptic loop hands it, on the real
+// threads. Per scene, force preset, tool mode and speed: the tool created
+// 186 mm out, the device starting 3 mm beyond the cutoff (still for 150 ms,
+// then moving), approaching to
+// 0.1 mm from the surface (5 mm past it for a constrained tool), sliding
+// 10 mm sideways and back, then held. Written against the C API alone (no
+// function newer than 0.3.0), so the same file measures an older build
+// side by side.
+//
+//   proxima_fidelity_bench [--scene bunny|engine|all] [--speeds 5,50] [--json FILE]
+#include <proxima/proxima.h>
+
+#include "common/json_writer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+void check(proxResult r, const char* what) {
+  if (r != PROX_SUCCESS) {
+    std::fprintf(stderr, "proxima_fidelity_bench: %s: %s\n", what, proxGetLastError());
+    std::exit(1);
+  }
+}
+
+std::string asset(const char* name) {
+  const char* env = std::getenv("PROXIMA_ASSETS");
+  return std::string(env && *env ? env : PROX_SHARED_ASSETS_DIR) + "/" + name;
+}
+
+
+// The path as keypoints of the tool's x and y, walked at a steady speed.
+struct Path {
+  std::vector<double> x, y;
+  double speed = 0.0;  // m/s
+  double wait = 0.15;  // s still at the start, nothing within the cutoff
+  double hold = 0.2;   // s at the end
+  double length() const {
+    double l = 0.0;
+    for (std::size_t i = 1; i < x.size(); ++i) l += std::hypot(x[i] - x[i - 1], y[i] - y[i - 1]);
+    return l;
+  }
+  double seconds() const { return wait + length() / speed + hold; }
+  void at(double t, double& px, double& py) const {
+    double s = std::max(0.0, t - wait) * speed;
+    for (std::size_t i = 1; i < x.size(); ++i) {
+      const double l = std::hypot(x[i] - x[i - 1], y[i] - y[i - 1]);
+      if (s <= l && l > 0.0) {
+        px = x[i - 1] + (x[i] - x[i - 1]) * s / l;
+        py = y[i - 1] + (y[i] - y[i - 1]) * s / l;
+        return;
+      }
+      s -= l;
+    }
+    px = x.back(), py = y.back();
+  }
+};
+
+// The application's device: the path's pose at the haptic thread's time,
+// and every wrench kept (storage reserved before the threads start).
+struct HandDevice {
+  const Path* path = nullptr;
+  double start = 0.0;
+  std::vector<double> time, fx, fy, fz, px;
+  std::atomic<std::size_t> writes{0};
+  double last_x = 0.0;  // haptic thread's own: the pose it last handed out
+  static proxBool read(void* user, proxPose* pose) {
+    auto* self = static_cast<HandDevice*>(user);
+    double x, y;
+    self->path->at(proxGetTime() - self->start, x, y);
+    self->last_x = x;
+    *pose = {{x, y, 0.0}, {1.0, 0.0, 0.0, 0.0}};
+    return 1;
+  }
+  static void write(void* user, const proxWrench* w) {
+    auto* self = static_cast<HandDevice*>(user);
+    const std::size_t n = self->writes.load(std::memory_order_relaxed);
+    if (n < self->time.size()) {
+      self->time[n] = proxGetTime() - self->start;
+      self->fx[n] = w->force.x, self->fy[n] = w->force.y, self->fz[n] = w->force.z;
+      self->px[n] = self->last_x;
+    }
+    self->writes.store(n + 1, std::memory_order_release);
+  }
+};
+
+struct SceneSpec {
+  const char* name;
+  std::string file;
+  double scale;  // file units to metres
+};
+
+struct Figures {
+  std::size_t ticks = 0, steps_over = 0, free_ticks = 0, free_nonzero = 0;
+  double max_step = 0.0, max_force = 0.0, free_max = 0.0, start_max = 0.0;
+  double stop_step = 0.0;  // the largest step of the fade-out after the stop
+  std::size_t late = 0;    // ticks that came more than 1.5 ms after the last
+};
+
+// The mesh of `file` at `scale` in `world`.
+proxMeshId load_scaled(proxWorldId world, const std::string& file, double scale) {
+  proxMeshId loaded{};
+  check(proxWorld_LoadMesh(world, file.c_str(), &loaded), file.c_str());
+  if (scale == 1.0) return loaded;
+  uint32_t nv = 0, nt = 0;
+  proxMesh_GetTriangles(loaded, nullptr, 0, &nv, nullptr, 0, &nt);
+  std::vector<double> p(3 * std::size_t{nv});
+  std::vector<uint32_t> t(3 * std::size_t{nt});
+  check(proxMesh_GetTriangles(loaded, p.data(), nv, &nv, t.data(), nt, &nt), "triangles");
+  for (double& v : p) v *= scale;
+  proxMeshDef def = proxDefaultMeshDef();
+  def.positions = p.data(), def.vertexCount = nv, def.indices = t.data(), def.triangleCount = nt;
+  proxMeshId mesh{};
+  check(proxWorld_CreateMesh(world, &def, &mesh), "scaled mesh");
+  check(proxMesh_Destroy(loaded), "destroy");
+  return mesh;
+}
+
+// Where the tool's x puts it `gap` from A along +x (bisection on the exact
+// distance; x0 is far enough out).
+double x_at_gap(proxBodyId a, proxBodyId b, double gap, double x0) {
+  double lo = 0.0, hi = x0;
+  for (int i = 0; i < 80; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    const proxPose pose{{mid, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}};
+    check(proxBody_SetPose(b, &pose), "pose");
+    double d = 0.0;
+    check(proxBody_GetDistance(a, b, gap * 2.0 + 1.0, &d), "distance");
+    (d < gap ? lo : hi) = mid;
+  }
+  return hi;
+}
+
+Figures run_one(const SceneSpec& scene, proxForcePreset preset, proxToolMode mode, double speed) {
+  proxWorldDef wd = proxDefaultWorldDef();
+  check(proxGetForcePreset(preset, &wd.force, &wd.cutoff), "preset");
+  proxWorldId world{};
+  check(proxCreateWorld(&wd, &world), "world");
+  const proxMeshId mesh = load_scaled(world, scene.file, scene.scale);
+  proxMeshInfo info{};
+  check(proxMesh_GetInfo(mesh, &info), "info");
+  const double width = info.boundsMax.x - info.boundsMin.x;
+  proxBodyDef bd = proxDefaultBodyDef();
+  bd.mesh = mesh;
+  proxBodyId a{}, probe{};
+  check(proxWorld_CreateBody(world, &bd, &a), "A");
+  bd.type = PROX_BODY_MOVABLE;
+  check(proxWorld_CreateBody(world, &bd, &probe), "probe");
+  const double far = 2.0 * width + 0.2;
+  const double cutoff = wd.cutoff;
+  const double x_start = x_at_gap(a, probe, cutoff + 0.003, far);
+  const double x_contact = x_at_gap(a, probe, 1e-7, far);
+  const double x_free = x_at_gap(a, probe, cutoff + 0.001, far);  // beyond: nothing within the cutoff
+  const double x_end = mode == PROX_TOOL_CONSTRAINED ? x_contact - 0.005 : x_at_gap(a, probe, 0.0001, far);
+  check(proxBody_Destroy(probe), "probe");
+  Path path;
+  path.speed = speed;
+  path.x = {x_start, x_end, x_end, x_end};
+  path.y = {0.0, 0.0, 0.010, 0.0};
+
+  bd.type = PROX_BODY_TOOL;
+  bd.toolMode = mode;
+  bd.pose = {{x_start + 0.186, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}};  // created 186 mm out
+  bd.referencePoint = {0.5 * (info.boundsMin.x + info.boundsMax.x), 0.5 * (info.boundsMin.y + info.boundsMax.y),
+                       0.5 * (info.boundsMin.z + info.boundsMax.z)};
+  proxBodyId tool{};
+  check(proxWorld_CreateBody(world, &bd, &tool), "tool");
+  auto device = std::make_unique<HandDevice>();
+  device->path = &path;
+  const std::size_t capacity = static_cast<std::size_t>(path.seconds() * 1500.0) + 2000;
+  for (auto* v : {&device->time, &device->fx, &device->fy, &device->fz, &device->px}) v->assign(capacity, 0.0);
+  proxDeviceDef dd = proxDefaultDeviceDef();
+  dd.readPose = &HandDevice::read;
+  dd.writeWrench = &HandDevice::write;
+  dd.userData = device.get();
+  check(proxBody_SetDevice(tool, &dd), "device");
+  const proxThreadsDef td = proxDefaultThreadsDef();
+  device->start = proxGetTime();
+  check(proxWorld_StartThreads(world, &td), "start");
+  // Closed on the device's own clock: the path walked and held.
+  while (proxGetTime() - device->start < path.seconds())
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  check(proxWorld_StopThreads(world), "stop");
+  check(proxDestroyWorld(world), "destroy");
+
+  Figures f;
+  std::size_t& late = f.late;
+  f.ticks = std::min(device->writes.load(), capacity);
+  double last[3] = {0.0, 0.0, 0.0};
+  for (std::size_t i = 0; i < f.ticks; ++i) {
+    const double F[3] = {device->fx[i], device->fy[i], device->fz[i]};
+    const double mag = std::sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
+    // A tick the scheduler held up covers more of the motion: its step is
+    // taken per millisecond of it, as a tick on time would have seen it.
+    const double gap = i > 0 ? device->time[i] - device->time[i - 1] : 0.001;
+    late += gap > 0.0015;
+    const double step = std::sqrt((F[0] - last[0]) * (F[0] - last[0]) + (F[1] - last[1]) * (F[1] - last[1]) +
+                                  (F[2] - last[2]) * (F[2] - last[2])) *
+                        (0.001 / std::max(gap, 0.001));
+    std::copy(F, F + 3, last);
+    f.max_force = std::max(f.max_force, mag);
+    // The fade-out after proxWorld_StopThreads is the safety gate's (its
+    // rate limit), counted apart.
+    if (device->time[i] > path.seconds()) {
+      f.stop_step = std::max(f.stop_step, step);
+      continue;
+    }
+    f.max_step = std::max(f.max_step, step);
+    f.steps_over += step > 0.05;
+    // Free air: the device (and with it, at this speed, its proxy) farther
+    // than the cutoff and a millimetre from A, on the way in.
+    const bool approaching = (device->time[i] - path.wait) * speed < x_start - x_end;
+    if (approaching && device->px[i] > x_free) {
+      ++f.free_ticks;
+      f.free_nonzero += mag != 0.0;
+      f.free_max = std::max(f.free_max, mag);
+    }
+    // The first 100 ms, still, with nothing in range.
+    if (device->time[i] <= 0.1) f.start_max = std::max(f.start_max, mag);
+  }
+  return f;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string which = "all", json_path;
+  std::vector<double> speeds = {0.005, 0.05};
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--scene" && i + 1 < argc) {
+      which = argv[++i];
+    } else if (a == "--speeds" && i + 1 < argc) {
+      speeds.clear();
+      for (const char* p = argv[++i]; *p;) {
+        char* end = nullptr;
+        speeds.push_back(std::strtod(p, &end) * 1e-3);
+        p = *end == ',' ? end + 1 : end;
+        if (end == p && *p) break;
+      }
+    } else if (a == "--json" && i + 1 < argc) {
+      json_path = argv[++i];
+    } else {
+      std::fprintf(stderr,
+                   "usage: proxima_fidelity_bench [--scene bunny|engine|all] [--speeds MM/S,...] [--json FILE]\n");
+      return 2;
+    }
+  }
+  std::vector<SceneSpec> scenes;
+  if (which == "all" || which == "bunny") scenes.push_back({"bunny", asset("bunny.obj"), 1.0});
+  if (which == "all" || which == "engine") scenes.push_back({"engine", asset("gltf/2CylinderEngine.glb"), 0.001});
+  const proxForcePreset presets[2] = {PROX_FORCE_PRESET_SOFT, PROX_FORCE_PRESET_HARD};
+  const proxToolMode modes[2] = {PROX_TOOL_FREE, PROX_TOOL_CONSTRAINED};
+  prox::JsonWriter j;
+  j.begin_array();
+  std::printf("%-7s %-5s %-12s %6s %7s %10s %10s %8s %11s %11s %11s %11s %5s\n", "scene", "force", "mode", "mm/s",
+              "ticks", "max |F| N", "max step N", "> 0.05", "free ticks", "free max N", "start max N", "stop step N", "late");
+  for (const SceneSpec& scene : scenes)
+    for (const proxForcePreset preset : presets)
+      for (const proxToolMode mode : modes)
+        for (const double speed : speeds) {
+          const Figures f = run_one(scene, preset, mode, speed);
+          const char* force = preset == PROX_FORCE_PRESET_SOFT ? "soft" : "hard";
+          const char* tool = mode == PROX_TOOL_FREE ? "free" : "constrained";
+          std::printf("%-7s %-5s %-12s %6.0f %7zu %10.4f %10.4f %8zu %11zu %11.3g %11.3g %11.4f %5zu\n", scene.name,
+                      force, tool, speed * 1e3, f.ticks, f.max_force, f.max_step, f.steps_over, f.free_ticks,
+                      f.free_max, f.start_max, f.stop_step, f.late);
+          std::fflush(stdout);
+          j.begin_object();
+          j.key("scene").value(scene.name).key("force").value(force).key("mode").value(tool);
+          j.key("speed_mm_s").value(speed * 1e3).key("ticks").value(static_cast<long long>(f.ticks));
+          j.key("max_force").value(f.max_force).key("max_step").value(f.max_step);
+          j.key("steps_over_0_05").value(static_cast<long long>(f.steps_over));
+          j.key("free_ticks").value(static_cast<long long>(f.free_ticks));
+          j.key("free_nonzero").value(static_cast<long long>(f.free_nonzero));
+          j.key("free_max").value(f.free_max).key("start_max").value(f.start_max);
+          j.key("stop_step").value(f.stop_step).key("late_ticks").value(static_cast<long long>(f.late));
+          j.end_object();
+        }
+  j.end_array();
+  if (!json_path.empty()) {
+    std::FILE* out = std::fopen(json_path.c_str(), "w");
+    if (!out) return 1;
+    std::fputs((j.str() + "\n").c_str(), out);
+    std::fclose(out);
+  }
+  return 0;
+}

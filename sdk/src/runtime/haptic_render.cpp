@@ -1,0 +1,84 @@
+#include "runtime/haptic_render.h"
+
+#include "coupling/proxy.h"
+
+#include <glm/geometric.hpp>
+
+namespace prox::runtime {
+
+HapticRenderer::HapticRenderer(const RenderSettings& settings) : settings_(settings) {
+  if (settings_.constrained) lambda_.reserve(settings_.capacity);
+}
+
+Wrench HapticRenderer::instantaneous(const ContactSnapshot& snapshot, const Pose& device,
+                                     coupling::HapticProxy* proxy, double* closest) {
+  if (!settings_.constrained)
+    return evaluate_contacts(settings_.force, snapshot, device, settings_.reference_local, closest);
+  *proxy = coupling::haptic_proxy(settings_.coupling, {snapshot.tool_pose, snapshot.reach}, snapshot.constraints,
+                                  coupling::target_distance(settings_.force.safety_distance), device,
+                                  settings_.reference_local, settings_.radius, lambda_);
+  if (closest) *closest = closest_tracked_distance(snapshot);
+  // The spring alone (no damper): free of every constraint the ideal is the
+  // device pose itself, and the spring exactly nothing.
+  if (!proxy->constrained) return Wrench{};
+  return coupling::coupling_wrench(settings_.coupling, device, proxy->ideal, settings_.reference_local, {});
+}
+
+void HapticRenderer::replacing(const ContactSnapshot& outgoing, const Pose& device) {
+  if (!rendered_) return;  // nothing was rendered from it: no jump to carry
+  coupling::HapticProxy proxy;
+  outgoing_ = instantaneous(outgoing, device, &proxy, nullptr);
+  outgoing_offset_ = settings_.constrained && proxy.constrained
+                         ? coupling::twist_between(device, proxy.ideal, settings_.reference_local)
+                         : coupling::Twist{};
+  replaced_ = true;
+}
+
+Wrench HapticRenderer::render(const ContactSnapshot& snapshot, const Pose& device, double dt, bool valid,
+                              const Wrench& gate_output, Pose* proxy_out, double* closest) {
+  const bool replaced = replaced_;
+  replaced_ = false;
+  if (!valid) {
+    // The gate fades what is not trusted; the proxy stays where it was.
+    continuity_.reset();
+    offset_rate_.reset();
+    rendered_ = false;
+    *proxy_out = settings_.constrained ? last_proxy_ : device;
+    return Wrench{};
+  }
+  coupling::HapticProxy proxy;
+  Wrench now = instantaneous(snapshot, device, &proxy, closest);
+  if (settings_.constrained) {
+    last_proxy_ = proxy.pose;
+    // The damper on the offset's low-passed rate. Across a replaced
+    // snapshot the rate is taken on the outgoing one's offset, so the jump
+    // of the ideal it brings is no velocity.
+    const coupling::Twist offset =
+        proxy.constrained ? coupling::twist_between(device, proxy.ideal, settings_.reference_local)
+                          : coupling::Twist{};
+    const coupling::Twist& rate =
+        offset_rate_.update(replaced ? outgoing_offset_ : offset, rendered_ ? dt : 0.0);
+    if (replaced) offset_rate_.rebase(offset);
+    const Vec3 damper_force = settings_.coupling.linear_damping * rate.linear;
+    const Vec3 damper_torque = settings_.coupling.angular_damping * rate.angular;
+    now.force += damper_force, now.torque += damper_torque;
+    if (replaced) outgoing_.force += damper_force, outgoing_.torque += damper_torque;
+    // Free of every constraint the damper dies out with the offset's rate;
+    // below what a device can render it is dropped, so free air is exactly
+    // silent.
+    if (!proxy.constrained && glm::length(damper_force) < ContinuityFilter::kZero &&
+        glm::length(damper_torque) < ContinuityFilter::kZero)
+      offset_rate_.reset();
+    *proxy_out = proxy.pose;
+  } else {
+    *proxy_out = device;
+  }
+  if (replaced)
+    continuity_.switched(outgoing_, now);
+  else if (!rendered_)
+    continuity_.switched(gate_output, now);  // trusted again (or the first tick): from what the device has
+  rendered_ = true;
+  return continuity_.step(now, dt);
+}
+
+}  // namespace prox::runtime
