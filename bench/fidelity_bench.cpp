@@ -53,8 +53,9 @@ struct Path {
     return l;
   }
   double seconds() const { return wait + length() / speed + hold; }
+  // The pose `t` s after the path began moving.
   void at(double t, double& px, double& py) const {
-    double s = std::max(0.0, t - wait) * speed;
+    double s = std::max(0.0, t) * speed;
     for (std::size_t i = 1; i < x.size(); ++i) {
       const double l = std::hypot(x[i] - x[i - 1], y[i] - y[i - 1]);
       if (s <= l && l > 0.0) {
@@ -72,14 +73,15 @@ struct Path {
 // and every wrench kept (storage reserved before the threads start).
 struct HandDevice {
   const Path* path = nullptr;
-  double start = 0.0;
-  std::vector<double> time, fx, fy, fz, px;
+  double start = 0.0;                // the threads' start (s, proxGetTime)
+  std::atomic<double> moving{1e300};  // when the path began: held at its start until then
+  std::vector<double> time, path_time, fx, fy, fz, px;
   std::atomic<std::size_t> writes{0};
   double last_x = 0.0;  // haptic thread's own: the pose it last handed out
   static proxBool read(void* user, proxPose* pose) {
     auto* self = static_cast<HandDevice*>(user);
     double x, y;
-    self->path->at(proxGetTime() - self->start, x, y);
+    self->path->at(proxGetTime() - self->moving.load(std::memory_order_relaxed), x, y);
     self->last_x = x;
     *pose = {{x, y, 0.0}, {1.0, 0.0, 0.0, 0.0}};
     return 1;
@@ -89,6 +91,7 @@ struct HandDevice {
     const std::size_t n = self->writes.load(std::memory_order_relaxed);
     if (n < self->time.size()) {
       self->time[n] = proxGetTime() - self->start;
+      self->path_time[n] = proxGetTime() - self->moving.load(std::memory_order_relaxed);
       self->fx[n] = w->force.x, self->fy[n] = w->force.y, self->fz[n] = w->force.z;
       self->px[n] = self->last_x;
     }
@@ -107,6 +110,7 @@ struct Figures {
   double max_step = 0.0, max_force = 0.0, free_max = 0.0, start_max = 0.0;
   double stop_step = 0.0;  // the largest step of the fade-out after the stop
   std::size_t late = 0;    // ticks that came more than 1.5 ms after the last
+  double end_gap = 0.0;    // the device pose's exact distance to A at the path's end
 };
 
 // The mesh of `file` at `scale` in `world`.
@@ -164,6 +168,11 @@ Figures run_one(const SceneSpec& scene, proxForcePreset preset, proxToolMode mod
   const double x_contact = x_at_gap(a, probe, 1e-7, far);
   const double x_free = x_at_gap(a, probe, cutoff + 0.001, far);  // beyond: nothing within the cutoff
   const double x_end = mode == PROX_TOOL_CONSTRAINED ? x_contact - 0.005 : x_at_gap(a, probe, 0.0001, far);
+  // The exact distance at the path's end (0: the device pose inside A).
+  const proxPose end_pose{{x_end, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}};
+  check(proxBody_SetPose(probe, &end_pose), "pose");
+  double end_gap = 0.0;
+  check(proxBody_GetDistance(a, probe, 1.0, &end_gap), "distance");
   check(proxBody_Destroy(probe), "probe");
   Path path;
   path.speed = speed;
@@ -180,7 +189,8 @@ Figures run_one(const SceneSpec& scene, proxForcePreset preset, proxToolMode mod
   auto device = std::make_unique<HandDevice>();
   device->path = &path;
   const std::size_t capacity = static_cast<std::size_t>(path.seconds() * 1500.0) + 2000;
-  for (auto* v : {&device->time, &device->fx, &device->fy, &device->fz, &device->px}) v->assign(capacity, 0.0);
+  for (auto* v : {&device->time, &device->path_time, &device->fx, &device->fy, &device->fz, &device->px})
+    v->assign(capacity, 0.0);
   proxDeviceDef dd = proxDefaultDeviceDef();
   dd.readPose = &HandDevice::read;
   dd.writeWrench = &HandDevice::write;
@@ -189,13 +199,29 @@ Figures run_one(const SceneSpec& scene, proxForcePreset preset, proxToolMode mod
   const proxThreadsDef td = proxDefaultThreadsDef();
   device->start = proxGetTime();
   check(proxWorld_StartThreads(world, &td), "start");
-  // Closed on the device's own clock: the path walked and held.
-  while (proxGetTime() - device->start < path.seconds())
+  // The device held still at the path's start for `wait`, and until a
+  // constrained tool's proxy has joined it there (how long that takes is the
+  // global search's pace: the proxy moves half the cutoff a search); then
+  // closed on the device's own clock: the path walked and held.
+  for (;;) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (proxGetTime() - device->start < path.wait) continue;
+    proxPose proxy{};
+    check(proxBody_GetProxyPose(tool, &proxy), "proxy");
+    if (mode == PROX_TOOL_FREE || std::abs(proxy.position.x - x_start) < 1e-9) break;
+    if (proxGetTime() - device->start > 60.0) {
+      std::fprintf(stderr, "proxima_fidelity_bench: the proxy never joined the device\n");
+      std::exit(1);
+    }
+  }
+  device->moving = proxGetTime();
+  while (proxGetTime() - device->moving.load() < path.seconds() - path.wait)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   check(proxWorld_StopThreads(world), "stop");
   check(proxDestroyWorld(world), "destroy");
 
   Figures f;
+  f.end_gap = end_gap;
   std::size_t& late = f.late;
   f.ticks = std::min(device->writes.load(), capacity);
   double last[3] = {0.0, 0.0, 0.0};
@@ -213,7 +239,7 @@ Figures run_one(const SceneSpec& scene, proxForcePreset preset, proxToolMode mod
     f.max_force = std::max(f.max_force, mag);
     // The fade-out after proxWorld_StopThreads is the safety gate's (its
     // rate limit), counted apart.
-    if (device->time[i] > path.seconds()) {
+    if (device->path_time[i] > path.seconds() - path.wait) {
       f.stop_step = std::max(f.stop_step, step);
       continue;
     }
@@ -221,13 +247,13 @@ Figures run_one(const SceneSpec& scene, proxForcePreset preset, proxToolMode mod
     f.steps_over += step > 0.05;
     // Free air: the device (and with it, at this speed, its proxy) farther
     // than the cutoff and a millimetre from A, on the way in.
-    const bool approaching = (device->time[i] - path.wait) * speed < x_start - x_end;
+    const bool approaching = device->path_time[i] * speed < x_start - x_end;
     if (approaching && device->px[i] > x_free) {
       ++f.free_ticks;
       f.free_nonzero += mag != 0.0;
       f.free_max = std::max(f.free_max, mag);
     }
-    // The first 100 ms, still, with nothing in range.
+    // The first 100 ms of the threads, the device still, nothing in range.
     if (device->time[i] <= 0.1) f.start_max = std::max(f.start_max, mag);
   }
   return f;
@@ -265,8 +291,8 @@ int main(int argc, char** argv) {
   const proxToolMode modes[2] = {PROX_TOOL_FREE, PROX_TOOL_CONSTRAINED};
   prox::JsonWriter j;
   j.begin_array();
-  std::printf("%-7s %-5s %-12s %6s %7s %10s %10s %8s %11s %11s %11s %11s %5s\n", "scene", "force", "mode", "mm/s",
-              "ticks", "max |F| N", "max step N", "> 0.05", "free ticks", "free max N", "start max N", "stop step N", "late");
+  std::printf("%-7s %-5s %-12s %6s %7s %10s %10s %8s %11s %11s %11s %11s %5s %10s\n", "scene", "force", "mode", "mm/s",
+              "ticks", "max |F| N", "max step N", "> 0.05", "free ticks", "free max N", "start max N", "stop step N", "late", "end gap mm");
   for (const SceneSpec& scene : scenes)
     for (const proxForcePreset preset : presets)
       for (const proxToolMode mode : modes)
@@ -274,9 +300,9 @@ int main(int argc, char** argv) {
           const Figures f = run_one(scene, preset, mode, speed);
           const char* force = preset == PROX_FORCE_PRESET_SOFT ? "soft" : "hard";
           const char* tool = mode == PROX_TOOL_FREE ? "free" : "constrained";
-          std::printf("%-7s %-5s %-12s %6.0f %7zu %10.4f %10.4f %8zu %11zu %11.3g %11.3g %11.4f %5zu\n", scene.name,
+          std::printf("%-7s %-5s %-12s %6.0f %7zu %10.4f %10.4f %8zu %11zu %11.3g %11.3g %11.4f %5zu %10.3f\n", scene.name,
                       force, tool, speed * 1e3, f.ticks, f.max_force, f.max_step, f.steps_over, f.free_ticks,
-                      f.free_max, f.start_max, f.stop_step, f.late);
+                      f.free_max, f.start_max, f.stop_step, f.late, f.end_gap * 1e3);
           std::fflush(stdout);
           j.begin_object();
           j.key("scene").value(scene.name).key("force").value(force).key("mode").value(tool);
@@ -286,7 +312,7 @@ int main(int argc, char** argv) {
           j.key("free_ticks").value(static_cast<long long>(f.free_ticks));
           j.key("free_nonzero").value(static_cast<long long>(f.free_nonzero));
           j.key("free_max").value(f.free_max).key("start_max").value(f.start_max);
-          j.key("stop_step").value(f.stop_step).key("late_ticks").value(static_cast<long long>(f.late));
+          j.key("end_gap").value(f.end_gap).key("stop_step").value(f.stop_step).key("late_ticks").value(static_cast<long long>(f.late));
           j.end_object();
         }
   j.end_array();

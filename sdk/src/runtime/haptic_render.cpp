@@ -6,9 +6,23 @@
 
 namespace prox::runtime {
 
-HapticRenderer::HapticRenderer(const RenderSettings& settings) : settings_(settings) {
+HapticRenderer::HapticRenderer(const RenderSettings& settings) : settings_(settings), last_proxy_(settings.start) {
   if (settings_.constrained) lambda_.reserve(settings_.capacity);
 }
+
+namespace {
+
+// What the spring pulls the device towards, or null for nothing: the ideal
+// proxy where the verified proxy's reach covers it; beyond it, with
+// something within the cutoff of the verified proxy, the proxy at the reach
+// (the hand is ahead of what has been checked, towards a surface); with
+// nothing there, nothing (a proxy still joining its device in free air).
+const Pose* spring_target(const coupling::HapticProxy& proxy, const ContactSnapshot& snapshot) {
+  if (proxy.within_reach) return proxy.constrained ? &proxy.ideal : nullptr;
+  return snapshot.constraints.empty() ? nullptr : &proxy.pose;
+}
+
+}  // namespace
 
 Wrench HapticRenderer::instantaneous(const ContactSnapshot& snapshot, const Pose& device,
                                      coupling::HapticProxy* proxy, double* closest) {
@@ -20,17 +34,17 @@ Wrench HapticRenderer::instantaneous(const ContactSnapshot& snapshot, const Pose
   if (closest) *closest = closest_tracked_distance(snapshot);
   // The spring alone (no damper): free of every constraint the ideal is the
   // device pose itself, and the spring exactly nothing.
-  if (!proxy->constrained) return Wrench{};
-  return coupling::coupling_wrench(settings_.coupling, device, proxy->ideal, settings_.reference_local, {});
+  const Pose* target = spring_target(*proxy, snapshot);
+  if (!target) return Wrench{};
+  return coupling::coupling_wrench(settings_.coupling, device, *target, settings_.reference_local, {});
 }
 
 void HapticRenderer::replacing(const ContactSnapshot& outgoing, const Pose& device) {
   if (!rendered_) return;  // nothing was rendered from it: no jump to carry
   coupling::HapticProxy proxy;
   outgoing_ = instantaneous(outgoing, device, &proxy, nullptr);
-  outgoing_offset_ = settings_.constrained && proxy.constrained
-                         ? coupling::twist_between(device, proxy.ideal, settings_.reference_local)
-                         : coupling::Twist{};
+  const Pose* target = settings_.constrained ? spring_target(proxy, outgoing) : nullptr;
+  outgoing_offset_ = target ? coupling::twist_between(device, *target, settings_.reference_local) : coupling::Twist{};
   replaced_ = true;
 }
 
@@ -53,9 +67,9 @@ Wrench HapticRenderer::render(const ContactSnapshot& snapshot, const Pose& devic
     // The damper on the offset's low-passed rate. Across a replaced
     // snapshot the rate is taken on the outgoing one's offset, so the jump
     // of the ideal it brings is no velocity.
+    const Pose* target = spring_target(proxy, snapshot);
     const coupling::Twist offset =
-        proxy.constrained ? coupling::twist_between(device, proxy.ideal, settings_.reference_local)
-                          : coupling::Twist{};
+        target ? coupling::twist_between(device, *target, settings_.reference_local) : coupling::Twist{};
     const coupling::Twist& rate =
         offset_rate_.update(replaced ? outgoing_offset_ : offset, rendered_ ? dt : 0.0);
     if (replaced) offset_rate_.rebase(offset);
@@ -66,7 +80,7 @@ Wrench HapticRenderer::render(const ContactSnapshot& snapshot, const Pose& devic
     // Free of every constraint the damper dies out with the offset's rate;
     // below what a device can render it is dropped, so free air is exactly
     // silent.
-    if (!proxy.constrained && glm::length(damper_force) < ContinuityFilter::kZero &&
+    if (!target && glm::length(damper_force) < ContinuityFilter::kZero &&
         glm::length(damper_torque) < ContinuityFilter::kZero)
       offset_rate_.reset();
     *proxy_out = proxy.pose;

@@ -24,6 +24,7 @@ struct RenderSettings {
   Vec3 reference_local{0.0};
   double radius = 0.0;        // of the tool's bounds about the reference point
   std::size_t capacity = 0;   // the snapshots' contact capacity (the proxy solve's storage)
+  Pose start;                 // a constrained tool's proxy until the first trusted tick: where it was made
 };
 
 class HapticRenderer {

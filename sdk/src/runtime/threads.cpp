@@ -102,7 +102,7 @@ Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), 
       if (tool->constrained) tool->snapshots.buffer(k).constraints.reserve(capacity);
     }
     tool->renderer = HapticRenderer({world.settings_.force, tool->constrained, tool->coupling,
-                                     tool->reference_local, tool->radius, capacity});
+                                     tool->reference_local, tool->radius, capacity, b.pose});
     if (settings_.trace_capacity > 0)
       tool->trace = std::make_unique<TraceRing<TraceSample>>(
           static_cast<std::size_t>(std::min(settings_.trace_capacity, kMaxTraceCapacity)));
