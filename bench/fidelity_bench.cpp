@@ -111,6 +111,7 @@ struct Figures {
   double stop_step = 0.0;  // the largest step of the fade-out after the stop
   std::size_t late = 0;    // ticks that came more than 1.5 ms after the last
   double end_gap = 0.0;    // the device pose's exact distance to A at the path's end
+  double local_p99 = 0.0, local_max = 0.0;  // local tracking's update, s
 };
 
 // The mesh of `file` at `scale` in `world`.
@@ -217,11 +218,14 @@ Figures run_one(const SceneSpec& scene, proxForcePreset preset, proxToolMode mod
   device->moving = proxGetTime();
   while (proxGetTime() - device->moving.load() < path.seconds() - path.wait)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  proxThreadStats local{};
+  check(proxWorld_GetThreadStats(world, PROX_THREAD_LOCAL, &local), "stats");
   check(proxWorld_StopThreads(world), "stop");
   check(proxDestroyWorld(world), "destroy");
 
   Figures f;
   f.end_gap = end_gap;
+  f.local_p99 = local.updateP99, f.local_max = local.updateMax;
   std::size_t& late = f.late;
   f.ticks = std::min(device->writes.load(), capacity);
   double last[3] = {0.0, 0.0, 0.0};
@@ -291,8 +295,8 @@ int main(int argc, char** argv) {
   const proxToolMode modes[2] = {PROX_TOOL_FREE, PROX_TOOL_CONSTRAINED};
   prox::JsonWriter j;
   j.begin_array();
-  std::printf("%-7s %-5s %-12s %6s %7s %10s %10s %8s %11s %11s %11s %11s %5s %10s\n", "scene", "force", "mode", "mm/s",
-              "ticks", "max |F| N", "max step N", "> 0.05", "free ticks", "free max N", "start max N", "stop step N", "late", "end gap mm");
+  std::printf("%-7s %-5s %-12s %6s %7s %10s %10s %8s %11s %11s %11s %11s %5s %10s %16s\n", "scene", "force", "mode", "mm/s",
+              "ticks", "max |F| N", "max step N", "> 0.05", "free ticks", "free max N", "start max N", "stop step N", "late", "end gap mm", "local p99/max ms");
   for (const SceneSpec& scene : scenes)
     for (const proxForcePreset preset : presets)
       for (const proxToolMode mode : modes)
@@ -300,9 +304,10 @@ int main(int argc, char** argv) {
           const Figures f = run_one(scene, preset, mode, speed);
           const char* force = preset == PROX_FORCE_PRESET_SOFT ? "soft" : "hard";
           const char* tool = mode == PROX_TOOL_FREE ? "free" : "constrained";
-          std::printf("%-7s %-5s %-12s %6.0f %7zu %10.4f %10.4f %8zu %11zu %11.3g %11.3g %11.4f %5zu %10.3f\n", scene.name,
+          std::printf("%-7s %-5s %-12s %6.0f %7zu %10.4f %10.4f %8zu %11zu %11.3g %11.3g %11.4f %5zu %10.3f %8.2f/%7.1f\n", scene.name,
                       force, tool, speed * 1e3, f.ticks, f.max_force, f.max_step, f.steps_over, f.free_ticks,
-                      f.free_max, f.start_max, f.stop_step, f.late, f.end_gap * 1e3);
+                      f.free_max, f.start_max, f.stop_step, f.late, f.end_gap * 1e3, f.local_p99 * 1e3,
+                      f.local_max * 1e3);
           std::fflush(stdout);
           j.begin_object();
           j.key("scene").value(scene.name).key("force").value(force).key("mode").value(tool);
@@ -312,6 +317,7 @@ int main(int argc, char** argv) {
           j.key("free_ticks").value(static_cast<long long>(f.free_ticks));
           j.key("free_nonzero").value(static_cast<long long>(f.free_nonzero));
           j.key("free_max").value(f.free_max).key("start_max").value(f.start_max);
+          j.key("local_update_p99").value(f.local_p99).key("local_update_max").value(f.local_max);
           j.key("end_gap").value(f.end_gap).key("stop_step").value(f.stop_step).key("late_ticks").value(static_cast<long long>(f.late));
           j.end_object();
         }

@@ -83,6 +83,7 @@ fi
 build/release/bench/proxima_bench --scene all --poses 5 --builds 1 --meshes build/bench-meshes --out build/bench-smoke >/dev/null
 build/release/bench/proxima_timing_bench --seconds 0.1 --out build/bench-smoke >/dev/null
 build/release/bench/proxima_patches_bench --runs 1 >/dev/null
+build/release/bench/proxima_fidelity_bench --scene bunny --speeds 50 >/dev/null
 ctest --test-dir build/release --output-on-failure -j "$jobs"
 
 stage "Python bindings (bindings/python): pip install into a fresh venv, then pytest"
