@@ -10,7 +10,9 @@
 #include <ctime>
 
 #if defined(_WIN32)
+#ifndef NOMINMAX
 #define NOMINMAX  // std::min and std::clamp stay usable
+#endif
 #include <windows.h>
 #endif
 
