@@ -54,6 +54,11 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
   if (adopted) {
     const GlobalResult& g = tool.global.front();
     std::vector<LocalPair> next(g.pairs.size());
+    // A constrained proxy's clearance was measured against the bodies (and
+    // the poses) of the last result: when they change it is measured again,
+    // or the reach handed to the haptic loop could count on it for a body
+    // it never saw.
+    bool same_obstacles = g.pairs.size() == tool.local_pairs.size();
     for (std::size_t i = 0; i < g.pairs.size(); ++i) {
       const GlobalPair& gp = g.pairs[i];
       LocalPair& lp = next[i];
@@ -61,13 +66,17 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
       lp.other_pose = gp.other_pose;
       lp.lmds = gp.lmds;
       if (method == Method::Original) lp.tracker = LocalTracker::original();
+      bool seen = false;
       for (LocalPair& old : tool.local_pairs)
         if (old.other == gp.other) {
+          seen = std::memcmp(&old.other_pose, &gp.other_pose, sizeof(Pose)) == 0;
           lp.tracker = std::move(old.tracker);
           if (join_tracked) lp.lmds.insert(lp.lmds.end(), old.lmds.begin(), old.lmds.end());
           break;
         }
+      same_obstacles = same_obstacles && seen;
     }
+    if (tool.constrained && !same_obstacles) tool.proxy_state.clearance = -1.0;
     tool.local_pairs = std::move(next);
     tool.anchor = g.tool_pose;
     tool.anchored = true;
