@@ -20,13 +20,6 @@ using namespace prox::test;
 
 namespace {
 
-std::vector<ProxMockXrVibration> vibrations_since(int32_t first) {
-  const int32_t total = mock_control().vibrations(nullptr, 0, 0);
-  std::vector<ProxMockXrVibration> v(std::size_t(std::max(0, total - first)));
-  if (!v.empty()) mock_control().vibrations(v.data(), first, int32_t(v.size()));
-  return v;
-}
-int32_t vibration_count() { return mock_control().vibrations(nullptr, 0, 0); }
 
 void sleep_s(double s) { std::this_thread::sleep_for(std::chrono::duration<double>(s)); }
 

@@ -11,11 +11,22 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace prox::test {
+
+// The vibrations the mock received from the `first`-th on, and how many so far.
+inline std::vector<ProxMockXrVibration> vibrations_since(int32_t first) {
+  const int32_t total = mock_control().vibrations(nullptr, 0, 0);
+  std::vector<ProxMockXrVibration> v(std::size_t(std::max(0, total - first)));
+  if (!v.empty()) mock_control().vibrations(v.data(), first, int32_t(v.size()));
+  return v;
+}
+inline int32_t vibration_count() { return mock_control().vibrations(nullptr, 0, 0); }
 
 struct Rigid {
   glm::dquat q{1, 0, 0, 0};
