@@ -70,10 +70,11 @@ double closest_tracked_distance(const ContactSnapshot& snapshot);
 // reference point has moved (translation plus rotation times radius).
 double pose_displacement(const Pose& from, const Pose& to, const Vec3& reference_point_local, double radius);
 
-// A free tool's force continuous in time (docs/haptic-fidelity.md): when a
-// new snapshot replaces the old one, the contacts it adds or drops inside
-// the cutoff (and the patch weights it changes) would step the force by the
-// difference between the two sets at the same pose. That difference is
+// The force continuous in time (docs/haptic-fidelity.md): when a new
+// snapshot replaces the old one, what it changes at the same pose (a free
+// tool's contacts born or lost inside the cutoff and patch weights, a
+// constrained tool's constraint set) would step the force by the
+// difference between the two at that pose. That difference is
 // carried over and fades out as a critically damped spring does, so a
 // contact born inside the cutoff fades in, one lost there fades out, with
 // no corner: a step s fades as s (1 + t/T) exp(-t/T), whose steepest change

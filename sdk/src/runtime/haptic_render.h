@@ -40,7 +40,6 @@ class HapticRenderer {
   // pose for a free tool) and *closest to the contacts' closest distance.
   Wrench render(const ContactSnapshot& snapshot, const Pose& device, double dt, bool valid,
                 const Wrench& gate_output, Pose* proxy, double* closest);
-  const Wrench& carried() const { return continuity_.carried(); }
 
  private:
   // The instantaneous wrench of `snapshot` at `device`, without the damper.

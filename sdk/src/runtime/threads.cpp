@@ -9,7 +9,6 @@
 #include <string>
 #include <system_error>
 
-#include "coupling/haptic_proxy.h"
 #include "runtime/platform.h"
 
 namespace prox::runtime {
@@ -373,8 +372,9 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
   if (tool.trace) {
     if (limited) flags |= kTraceClipped;
     if (!valid) flags |= kTraceFaded;
-    record(tool, t, ok ? sample.pose : tool.pose.load().pose, tool.constrained ? proxy : tool.pose.load().pose,
-           w, closest,
+    // Without a pose this tick, the last one read (the tool's pose seqlock).
+    const Pose device = ok ? sample.pose : tool.pose.load().pose;
+    record(tool, t, device, tool.constrained ? proxy : device, w, closest,
            valid ? static_cast<std::uint32_t>(snapshot.contacts.size()) : 0u, flags);
   }
 }
@@ -382,7 +382,7 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
 void Threads::record(Tool& tool, double t, const Pose& device, const Pose& proxy, const Wrench& w,
                      double closest, std::uint32_t contacts, std::uint32_t flags) {
   TraceSample s;
-  s.tick = tool.ticks++;
+  s.tick = tool.trace->written();  // the samples before this one
   s.time = t;
   pose_words(device, s.device);
   pose_words(proxy, s.proxy);

@@ -191,7 +191,7 @@ class Threads {
     // proxy is local tracking's and reaches the haptic loop in the snapshot.
     bool constrained = false;
     coupling::CouplingSettings coupling;
-    SeqLock<PoseSample> proxy;                  // local -> global, game
+    SeqLock<PoseSample> proxy;                  // local -> global: the verified proxy
     coupling::ProxyState proxy_state;           // local's own
     Pose anchor;                                // local's own: where the adopted global result searched
     bool anchored = false;                      // local's own: a global result adopted
@@ -201,7 +201,6 @@ class Threads {
     SeqLock<PoseSample> rendered;               // haptic -> game: the proxy at the haptic rate
     double closest = kNoContact;                // haptic's own: the last trusted tick's, for the device
     std::unique_ptr<TraceRing<TraceSample>> trace;  // haptic -> any; null when the recorder is off
-    std::uint64_t ticks = 0;                        // haptic's own
   };
 
   void haptic_main();
