@@ -44,11 +44,8 @@ TEST_P(XrPoseModes, ScriptedGripDrivesTheTool) {
       scene.far_tool() *
       Rigid{glm::angleAxis(-0.7, glm::normalize(glm::dvec3(1, 1, 0))), {0.05, -0.02, 0.03}};
   for (const Rigid& target : {a, b}) {
-    const ProxMockXrKey key{mock_control().now(), to_xr(scene.grip_for(target))};
-    mock_control().setScript(&key, 1);
-    const Rigid expected = scene.tool_for(key.pose);
-    ASSERT_TRUE(app.pump_until([&] { return scene.error(expected) < 1e-6; }, 10.0))
-        << "the tool is " << scene.error(expected) << " m from the script";
+    const Rigid expected = scene.follow_to(app, target);
+    ASSERT_LT(scene.error(expected), 1e-6) << "the tool is " << scene.error(expected) << " m from the script";
     app.pump_for(0.1);
     EXPECT_LT(scene.error(expected), 1e-6);
   }
@@ -102,16 +99,7 @@ TEST_P(XrMotion, ToolFollowsTheMovingGripAtNow) {
   const Rigid start = scene.tool_for(keys[0].pose), end = scene.tool_for(keys[1].pose);
   const proxXrDeviceId device = scene.start(app, def);
 
-  std::vector<double> errors;
-  while (mock_control().now() < t1 - 100000000) {
-    app.frame();
-    const XrTime before = mock_control().now();
-    const glm::dvec3 p = of(scene.tool_pose()).p;
-    const XrTime after = mock_control().now();
-    const double f = (0.5 * double(before + after) - double(t0)) / double(t1 - t0);
-    if (f < 0.25) continue;  // the motion under way for a while
-    errors.push_back(glm::length(p - (start.p + (end.p - start.p) * f)));
-  }
+  std::vector<double> errors = scene.motion_errors(app, t0, t1, t1 - 100000000, start, end);
   ASSERT_GT(errors.size(), 20u);
   std::sort(errors.begin(), errors.end());
   const double median = errors[errors.size() / 2];

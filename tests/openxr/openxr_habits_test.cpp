@@ -29,11 +29,8 @@ void follows_the_grip(XrApp& app, XrScene& scene) {
   const Rigid a = scene.far_tool() * Rigid{glm::angleAxis(0.4, glm::dvec3(0, 0, 1)), {0, 0.01, 0}};
   const Rigid b = scene.far_tool() * Rigid{glm::angleAxis(-0.7, glm::dvec3(1, 0, 0)), {0.05, -0.02, 0.03}};
   for (const Rigid& target : {a, b}) {
-    const ProxMockXrKey key{mock_control().now(), to_xr(scene.grip_for(target))};
-    mock_control().setScript(&key, 1);
-    const Rigid expected = scene.tool_for(key.pose);
-    ASSERT_TRUE(app.pump_until([&] { return scene.error(expected) < 1e-6; }, 10.0))
-        << "the tool is " << scene.error(expected) << " m from the script";
+    const Rigid expected = scene.follow_to(app, target);
+    ASSERT_LT(scene.error(expected), 1e-6) << "the tool is " << scene.error(expected) << " m from the script";
   }
 }
 
@@ -93,16 +90,7 @@ TEST_P(XrHabitsModes, NoClockButTheRuntimesTime) {
                                  {t1, to_xr(scene.grip_for({from.q, from.p + glm::dvec3(0.2, 0, 0)}))}};
   mock_control().setScript(keys, 2);
   const Rigid start = scene.tool_for(keys[0].pose), end = scene.tool_for(keys[1].pose);
-  std::vector<double> errors;
-  while (mock_control().now() < t1 - 50000000) {
-    app.frame();
-    const XrTime before = mock_control().now();
-    const glm::dvec3 p = of(scene.tool_pose()).p;
-    const XrTime after = mock_control().now();
-    const double f = (0.5 * double(before + after) - double(t0)) / double(t1 - t0);
-    if (f < 0.25) continue;
-    errors.push_back(glm::length(p - (start.p + (end.p - start.p) * f)));
-  }
+  std::vector<double> errors = scene.motion_errors(app, t0, t1, t1 - 50000000, start, end);
   ASSERT_GT(errors.size(), 10u);
   std::sort(errors.begin(), errors.end());
   EXPECT_LT(errors[errors.size() / 2], 0.003) << "the device's clock is not the runtime's";

@@ -141,6 +141,36 @@ class XrScene {
     return std::max(position, angle);
   }
 
+  // Scripts the grip to hold the tool at `target` and pumps the app until
+  // the tool is within 1e-6 of where the script puts it (or 10 s pass);
+  // returns that pose, for the caller to check error() against.
+  Rigid follow_to(XrApp& app, const Rigid& target) const {
+    const ProxMockXrKey key{mock_control().now(), to_xr(grip_for(target))};
+    mock_control().setScript(&key, 1);
+    const Rigid expected = tool_for(key.pose);
+    app.pump_until([&] { return error(expected) < 1e-6; }, 10.0);
+    return expected;
+  }
+
+  // While the runtime's clock runs from t0 to `until`, one app frame at a
+  // time: how far the tool is from the straight motion from `start` (at t0)
+  // to `end` (at t1), at the middle of each read's runtime time, once a
+  // quarter of the motion is under way.
+  std::vector<double> motion_errors(XrApp& app, XrTime t0, XrTime t1, XrTime until, const Rigid& start,
+                                    const Rigid& end) const {
+    std::vector<double> errors;
+    while (mock_control().now() < until) {
+      app.frame();
+      const XrTime before = mock_control().now();
+      const glm::dvec3 p = of(tool_pose()).p;
+      const XrTime after = mock_control().now();
+      const double f = (0.5 * double(before + after) - double(t0)) / double(t1 - t0);
+      if (f < 0.25) continue;  // the motion under way for a while
+      errors.push_back(glm::length(p - (start.p + (end.p - start.p) * f)));
+    }
+    return errors;
+  }
+
   proxWorldId world{};
   proxMeshId mesh{};
   proxBodyId rock{}, tool{};
