@@ -94,7 +94,7 @@ TEST_F(Threads, ScriptedDevicesAreValidated) {
   std::remove(path.c_str());
 }
 
-TEST_F(Threads, DevicesAttachOnlyToToolsAndOnlyWhenStopped) {
+TEST_F(Threads, DevicesAttachOnlyToToolsAndChangeWhileTheThreadsRun) {
   proxDeviceDef def = proxDefaultDeviceDef();
   EXPECT_FAILS(proxBody_SetDevice(tool, &def), PROX_ERROR_INVALID_ARGUMENT, "readPose");
   def.readPose = [](void*, proxPose* pose) -> proxBool {
@@ -112,14 +112,48 @@ TEST_F(Threads, DevicesAttachOnlyToToolsAndOnlyWhenStopped) {
 
   const proxThreadsDef threads = proxDefaultThreadsDef();
   ASSERT_OK(proxWorld_StartThreads(world, &threads));
-  EXPECT_FAILS(proxBody_SetDevice(tool, nullptr), PROX_ERROR_BUSY, "proxWorld_StopThreads");
   proxPose pose = at(0.2);
   EXPECT_FAILS(proxBody_SetPose(tool, &pose), PROX_ERROR_BUSY, "device");
+  // Detached while the threads run: the game thread moves the tool then.
+  EXPECT_OK(proxBody_SetDevice(tool, nullptr));
+  EXPECT_OK(proxBody_SetPose(tool, &pose));
+  EXPECT_OK(proxBody_SetDevice(tool, &def));
+  EXPECT_FAILS(proxBody_SetPose(tool, &pose), PROX_ERROR_BUSY, "device");
   EXPECT_OK(proxWorld_StopThreads(world));
+  EXPECT_OK(proxBody_SetDevice(tool, nullptr));
   EXPECT_OK(proxBody_SetPose(tool, &pose));
 }
 
-TEST_F(Threads, StartAndStopAreValidatedAndToolsStayWhileTheyRun) {
+// A built-in device is one hand: it drives one tool at a time, before and
+// while the threads run; handed to another tool, it is refused by name.
+TEST_F(Threads, ABuiltInDeviceHoldsOneToolAtATime) {
+  proxScriptedDeviceDef sd = proxDefaultScriptedDeviceDef();
+  const proxPose poses[1] = {at(0.13)};
+  sd.poses = poses;
+  sd.poseCount = 1;
+  sd.secondsPerPose = 0.1;
+  proxScriptedDeviceId scripted{};
+  ASSERT_OK(proxWorld_CreateScriptedDevice(world, &sd, &scripted));
+  proxDeviceDef def{};
+  ASSERT_OK(proxScriptedDevice_GetDeviceDef(scripted, &def));
+  proxBodyDef bd = proxDefaultBodyDef();
+  bd.mesh = mesh;
+  bd.type = PROX_BODY_TOOL;
+  bd.pose = at(0.0, 0.5);
+  proxBodyId second{};
+  ASSERT_OK(proxWorld_CreateBody(world, &bd, &second));
+  EXPECT_OK(proxBody_SetDevice(tool, &def));
+  EXPECT_OK(proxBody_SetDevice(tool, &def));  // again on the same tool: no change
+  EXPECT_FAILS(proxBody_SetDevice(second, &def), PROX_ERROR_INVALID_ARGUMENT, "already holds another tool");
+  const proxThreadsDef threads = proxDefaultThreadsDef();
+  ASSERT_OK(proxWorld_StartThreads(world, &threads));
+  EXPECT_FAILS(proxBody_SetDevice(second, &def), PROX_ERROR_INVALID_ARGUMENT, "already holds another tool");
+  EXPECT_OK(proxBody_SetDevice(tool, nullptr));
+  EXPECT_OK(proxBody_SetDevice(second, &def));  // let go of, it may hold another
+  EXPECT_OK(proxWorld_StopThreads(world));
+}
+
+TEST_F(Threads, StartAndStopAreValidatedAndTheSceneLivesWhileTheyRun) {
   proxThreadsDef def = proxDefaultThreadsDef();
   EXPECT_FAILS(proxWorld_StartThreads(world, nullptr), PROX_ERROR_INVALID_ARGUMENT, "def");
   proxThreadsDef raw{};
@@ -165,8 +199,13 @@ TEST_F(Threads, StartAndStopAreValidatedAndToolsStayWhileTheyRun) {
   EXPECT_OK(proxMesh_Destroy(other));
   bd.type = PROX_BODY_TOOL;
   bd.mesh = mesh;
-  EXPECT_FAILS(proxWorld_CreateBody(world, &bd, &body), PROX_ERROR_BUSY, "tools are created with the threads stopped");
-  EXPECT_FAILS(proxBody_Destroy(tool), PROX_ERROR_BUSY, "threads stopped");
+  bd.pose = at(0.0, -0.5);
+  proxBodyId second{};
+  EXPECT_OK(proxWorld_CreateBody(world, &bd, &second));
+  EXPECT_OK(proxBody_Destroy(second));
+  proxWrench gone{};
+  EXPECT_FAILS(proxBody_GetWrench(second, &gone), PROX_ERROR_INVALID_HANDLE, "live body");
+  // A tool's mesh keeps its shape while the threads run.
   EXPECT_FAILS(proxMesh_SetVertices(mesh, positions.data(), 8), PROX_ERROR_BUSY, "a tool holds the mesh");
 
   // Another thread may not drive the world.

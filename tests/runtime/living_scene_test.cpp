@@ -43,6 +43,19 @@ class LivingScene : public ThreadsTest {
     for (const Contact& c : contacts) closest = std::min(closest, c.lmd.distance);
     return closest;
   }
+  // The recorded ticks of a tool where the safety gate changed a force that
+  // was not zero (what a step into the gate looks like).
+  int gate_limited_a_force(Handle tool) const {
+    std::vector<TraceSample> trace(static_cast<std::size_t>(settings_.trace_capacity));
+    const std::size_t n = world_->threads()->trace(tool.index, trace.data(), trace.size());
+    int limited = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+      const bool force = trace[i].force[0] != 0.0 || trace[i].force[1] != 0.0 || trace[i].force[2] != 0.0 ||
+                         trace[i - 1].force[0] != 0.0 || trace[i - 1].force[1] != 0.0 || trace[i - 1].force[2] != 0.0;
+      if ((trace[i].flags & kTraceClipped) && force) ++limited;
+    }
+    return limited;
+  }
   bool contacts_with(std::uint32_t body) const {
     std::vector<Contact> contacts;
     world_->contacts(tool_, contacts);
@@ -158,6 +171,52 @@ TEST_F(LivingScene, StormsOfChangesLeaveTheLoopSafeAndTheAnswerRight) {
   ASSERT_TRUE(world_->set_vertices(wall_mesh_, rest.data(), bunny_->mesh.vertex_count(), status));
   EXPECT_TRUE(wait_until([&] { return at_rest_force(); })) << "the restored scene's force never came back";
   expect_safe_output();
+}
+
+// Tools come and go while the threads run. The held tool destroyed in
+// contact: its device's wrench fades to an exact zero before the call
+// returns, and the device is called no more. A new tool made in its place,
+// given a device of its own: driven, its contacts found, its force faded in.
+// Its device swapped for another: the first one faded out and let go of.
+TEST_F(LivingScene, ToolsComeAndGoWithTheirDevicesFadedInAndOut) {
+  FaultyDevice* device = nullptr;
+  start_and_settle(device);
+  world_->destroy_body(tool_);
+  const ScriptedRecord gone = scripted_->record();
+  EXPECT_EQ(length(gone.last_force), 0.0) << "the device was left with a force";
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_EQ(scripted_->record().reads, gone.reads) << "the destroyed tool's device was still read";
+  EXPECT_EQ(scripted_->record().writes, gone.writes) << "the destroyed tool's device was still written";
+
+  // A bunny tool made again where the first one was held, on a device of its own.
+  ScriptedDevice held({ScriptedPose::of(near_)}, 1.0, false);
+  FaultyDevice second(held);
+  const Handle tool = world_->create_body(wall_mesh_, BodyType::Tool, far_, bunny_->centre);
+  world_->set_device(tool, second.device());
+  EXPECT_TRUE(wait_until([&] {
+    return length(world_->wrench(tool).force - expected_wrench_.force) <= 1e-9 * length(expected_wrench_.force);
+  })) << "the new tool never reached the held tool's force";
+  EXPECT_GT(held.record().reads, 0u);
+  // The new tool's first tick has no contacts yet (the gate holds it at 0,
+  // flagged); from there on the force fades in, the gate never limiting it.
+  EXPECT_EQ(gate_limited_a_force(tool), 0) << "the new tool's force stepped";
+
+  // Its device swapped for a third, held at the same pose.
+  ScriptedDevice third_device({ScriptedPose::of(near_)}, 1.0, false);
+  FaultyDevice third(third_device);
+  world_->set_device(tool, third.device());
+  const ScriptedRecord swapped = held.record();
+  EXPECT_EQ(length(swapped.last_force), 0.0);
+  EXPECT_TRUE(wait_until([&] {
+    return length(world_->wrench(tool).force - expected_wrench_.force) <= 1e-9 * length(expected_wrench_.force);
+  })) << "the swapped device never got the force back";
+  EXPECT_EQ(held.record().writes, swapped.writes) << "the swapped-out device was still written";
+  EXPECT_GT(third_device.record().writes, 0u);
+  EXPECT_EQ(gate_limited_a_force(tool), 0) << "the swapped tool's force stepped";
+  EXPECT_EQ(prox::testing::marked_allocations(), 0) << "the haptic thread allocated";
+  EXPECT_EQ(world_->threads()->haptic_counters().torn_snapshots, 0u);
+  world_->stop_threads();
+  EXPECT_EQ(length(third_device.record().last_force), 0.0);
 }
 
 }  // namespace

@@ -41,13 +41,14 @@ def test_threads_with_the_scripted_device(world, bunny):
         assert p[0] == pytest.approx(0.1392, abs=1e-9)
         with pytest.raises(proxima.Busy, match="proxWorld_Step"):
             world.step()
-        # Static bodies and meshes come and go while the threads run; tools stay.
-        far = world.create_body(world.load_mesh(BUNNY), "static", pose=((0, 1, 0), (1, 0, 0, 0)))
+        # Meshes, bodies and tools come and go while the threads run; a tool's mesh keeps its shape.
+        other = world.load_mesh(BUNNY)
+        far = world.create_body(other, "static", pose=((0, 1, 0), (1, 0, 0, 0)))
         far.destroy()
-        with pytest.raises(proxima.Busy, match="tools are created with the threads stopped"):
-            world.create_body(bunny, "tool")
-        with pytest.raises(proxima.Busy):
-            tool.set_device(None)
+        second = world.create_body(other, "tool", pose=((0, -1, 0), (1, 0, 0, 0)))
+        with pytest.raises(proxima.Busy, match="a tool holds the mesh"):
+            other.set_vertices(other.triangles()[0])
+        second.destroy()
         with pytest.raises(proxima.Busy):
             tool.pose = ((0.2, 0, 0), (1, 0, 0, 0))
         time.sleep(0.2)

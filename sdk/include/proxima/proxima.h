@@ -291,10 +291,11 @@ typedef struct proxBodyDef {
 } proxBodyDef;
 
 PROX_API proxBodyDef proxDefaultBodyDef(void);
-/* Game thread. Create and destroy: also while the threads run for static and
- * movable bodies (a destroyed body's contacts fade from the force as any lost
- * contact does; a new one is found by the next global search); tools:
- * PROX_ERROR_BUSY while the threads run.
+/* Game thread. Create and destroy: also while the threads run
+ * (docs/dynamic-scenes.md): a destroyed body's contacts fade from the force as
+ * any lost contact does, and a new one is found by the next global search; a
+ * tool destroyed while they run has its device's wrench faded to zero before
+ * the call returns, and its device is called no more.
  * SetPose while they run: taken at the threads' next iteration; refused for
  * a tool a device holds. GetPose of a tool while they run: the pose the
  * haptic loop last read. */
@@ -472,8 +473,12 @@ typedef struct proxDeviceDef {
 PROX_API proxDeviceDef proxDefaultDeviceDef(void);
 
 /* Lets a device hold a tool while the threads run (def NULL: none; the
- * game thread's proxBody_SetPose then moves the tool). The def is copied.
- * Game thread; PROX_ERROR_BUSY while the threads run. */
+ * game thread's proxBody_SetPose then moves the tool). The def is copied. A
+ * built-in device (scripted, streamed, HID, XR) holds one tool at a time:
+ * handed to another, PROX_ERROR_INVALID_ARGUMENT. Game thread; also while
+ * the threads run: the old device's wrench fades to zero before this returns,
+ * and it is called no more; the new one's force fades in once its contacts
+ * come (docs/dynamic-scenes.md). */
 PROX_API proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def);
 
 /* The built-in scripted device: a tool moved along a path of poses, for

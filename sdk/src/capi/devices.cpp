@@ -77,7 +77,6 @@ proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def) {
   return guard("proxBody_SetDevice", [&] {
     runtime::World* w = nullptr;
     const runtime::Handle h = tool_of(tool, w);
-    need_stopped(*w);
     if (!def) {
       w->set_device(h, runtime::Device{});
       return;
@@ -93,6 +92,12 @@ proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def) {
     hid_device_def(*def, tool.world, d);
 #endif
     if (d.attached()) {
+      // One device, one hand: a built-in device drives one tool at a time.
+      const int holder = w->device_holder(d.user);
+      if (holder >= 0 && static_cast<std::uint32_t>(holder) != h.index)
+        fail(PROX_ERROR_INVALID_ARGUMENT, "the device already holds another tool (body slot " +
+                                              std::to_string(holder) +
+                                              "); give that tool another device or NULL first");
       w->set_device(h, d);
       return;
     }

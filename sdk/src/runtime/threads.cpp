@@ -14,8 +14,6 @@
 namespace prox::runtime {
 namespace {
 
-constexpr int kMaxContactsPerTool = 1 << 20;  // ThreadSettings::max_contacts
-constexpr int kMaxTraceCapacity = 1 << 20;    // ThreadSettings::trace_capacity: 17 min at 1 kHz, 216 MiB
 
 // x y z, then the rotation as a quaternion w x y z.
 void pose_words(const Pose& pose, double out[7]) {
@@ -68,44 +66,14 @@ void default_cores(int cores[3]) { platform::default_cores(cores); }
 Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), settings_(settings) {
   epoch_ = Clock::now();
   local_view_ = global_view_ = world.view();
-  tool_of_body_.assign(world.bodies_.size(), -1);
+  auto first = std::make_unique<ToolSet>();
   for (std::uint32_t i = 0; i < world.bodies_.size(); ++i) {
     const World::BodySlot& b = world.bodies_[i];
     if (!b.alive || b.type != BodyType::Tool) continue;
-    auto tool = std::make_unique<Tool>();
-    tool->body = i;
-    tool->device = b.device;
-    tool->reference_local = b.reference_point;
-    tool->radius = b.radius;
-    const PoseSample start{b.tool.mode == coupling::ToolMode::Constrained ? b.device_pose : b.pose, 0.0};
-    tool->pose.store(start);
-    tool->game_pose.store(start);
-    tool->constrained = b.tool.mode == coupling::ToolMode::Constrained;
-    tool->coupling = b.tool.coupling;
-    tool->proxy.store({b.pose, 0.0});
-    tool->rendered.store({b.pose, 0.0});
-    tool->proxy_state.pose = b.pose;
-    tool->anchor = b.pose;
-    tool->wrench.store({b.wrench});
-    tool->contacts = b.contacts;
-    // The haptic loop's snapshots never grow once the threads run. Clamped
-    // to the range check() accepts, for a Threads constructed without asking
-    // it first (World::start_threads asks).
-    const auto capacity = static_cast<std::size_t>(std::clamp(settings_.max_contacts, 1, kMaxContactsPerTool));
-    for (int k = 0; k < 3; ++k) {
-      tool->snapshots.buffer(k).contacts.reserve(capacity);
-      if (tool->constrained) tool->snapshots.buffer(k).constraints.reserve(capacity);
-    }
-    tool->renderer = HapticRenderer({world.settings_.force, tool->constrained, tool->coupling,
-                                     tool->reference_local, tool->radius, capacity, b.pose});
-    if (settings_.trace_capacity > 0)
-      tool->trace = std::make_unique<TraceRing<TraceSample>>(
-          static_cast<std::size_t>(std::min(settings_.trace_capacity, kMaxTraceCapacity)));
-    tool->filter = SafetyFilter({world.settings_.force.max_force, world.settings_.force.max_torque,
-                                 settings_.max_force_rate, settings_.max_torque_rate});
-    tool_of_body_[i] = static_cast<int>(tools_.size());
-    tools_.push_back(std::move(tool));
+    tools_.push_back(make_tool(i));
+    first->tools.push_back(tools_.back().get());
   }
+  publish(std::move(first));
   for (auto& p : pinned_) p.store(-1);
 }
 
@@ -287,7 +255,14 @@ void Threads::haptic_main() {
     const double start = now();
     const double dt = start - last_tick;
     last_tick = start;
-    for (auto& tool : tools_) haptic_tick(*tool, start, dt);
+    for (Tool* tool : acquire(Role::Haptic).tools) {
+      const int retiring = tool->retiring.load(std::memory_order_acquire);
+      if (retiring == 0) {
+        haptic_tick(*tool, start, dt);
+      } else if (retiring == 1 && fade_step(*tool, std::min(dt, 1e-3))) {
+        tool->retiring.store(2, std::memory_order_release);  // the device is called no more
+      }
+    }
     pace(Role::Haptic, period, start, previous, deadline);
   }
   // Stopping must not drop the force at once: fade every device out at the
@@ -295,25 +270,29 @@ void Threads::haptic_main() {
   // most a millisecond, so a slow loop does not make the fade slow too (the
   // gate takes at most kMaxStep of a longer tick).
   const double fade_tick = std::min(period, 1e-3);
+  const ToolSet& set = acquire(Role::Haptic);
   for (int tick = 0; tick < 10000; ++tick) {
     bool zero = true;
-    for (auto& tool : tools_) {
-      const Wrench w = tool->filter.step(Wrench{}, false, fade_tick);
-      if (tool->device.write_wrench) {
-        const DeviceWrench out = device_wrench(w, true, kNoContact, world_.settings_);
-        tool->device.write_wrench(tool->device.user, &out);
-      }
-      tool->wrench.store({w});
-      if (tool->trace) {
-        const Pose device = tool->pose.load().pose;
-        // The device is told the fade is the gate's doing (clipped).
-        record(*tool, now(), device, device, w, kNoContact, 0, kTraceFaded | kTraceStopping | kTraceClipped);
-      }
-      zero = zero && glm::length(w.force) == 0.0 && glm::length(w.torque) == 0.0;
-    }
+    for (Tool* tool : set.tools)
+      if (tool->retiring.load(std::memory_order_acquire) != 2) zero = fade_step(*tool, fade_tick) && zero;
     if (zero) break;
     std::this_thread::sleep_for(std::chrono::duration<double>(fade_tick));
   }
+}
+
+bool Threads::fade_step(Tool& tool, double dt) {
+  const Wrench w = tool.filter.step(Wrench{}, false, dt);
+  if (tool.device.write_wrench) {
+    const DeviceWrench out = device_wrench(w, true, kNoContact, world_.settings_);
+    tool.device.write_wrench(tool.device.user, &out);
+  }
+  tool.wrench.store({w});
+  if (tool.trace) {
+    const Pose device = tool.pose.load().pose;
+    // The device is told the fade is the gate's doing (clipped).
+    record(tool, now(), device, device, w, kNoContact, 0, kTraceFaded | kTraceStopping | kTraceClipped);
+  }
+  return glm::length(w.force) == 0.0 && glm::length(w.torque) == 0.0;
 }
 
 void Threads::haptic_tick(Tool& tool, double t, double dt) {
@@ -391,38 +370,6 @@ void Threads::record(Tool& tool, double t, const Pose& device, const Pose& proxy
 }
 
 // ---- the game thread's side --------------------------------------------------------
-
-void Threads::set_tool_pose(std::uint32_t body, const Pose& pose) {
-  const int k = tool_of_body_[body];
-  if (k >= 0) tools_[std::size_t(k)]->game_pose.store({pose, now()});
-}
-
-Pose Threads::tool_pose(std::uint32_t body) const {
-  const int k = tool_of_body_[body];
-  return tools_[std::size_t(k)]->pose.load().pose;
-}
-
-Pose Threads::proxy_pose(std::uint32_t body) const {
-  const Tool& tool = *tools_[std::size_t(tool_of_body_[body])];
-  return tool.constrained ? tool.rendered.load().pose : tool.pose.load().pose;
-}
-
-Wrench Threads::wrench(std::uint32_t body) const {
-  const int k = tool_of_body_[body];
-  return tools_[std::size_t(k)]->wrench.load().wrench;
-}
-
-void Threads::contacts(std::uint32_t body, std::vector<Contact>& out) const {
-  const int k = tool_of_body_[body];
-  std::lock_guard<std::mutex> lock(results_mutex_);
-  out = tools_[std::size_t(k)]->contacts;
-}
-
-std::size_t Threads::trace(std::uint32_t body, TraceSample* out, std::size_t max) const {
-  const int k = tool_of_body_[body];
-  if (k < 0 || !tools_[std::size_t(k)]->trace) return 0;
-  return tools_[std::size_t(k)]->trace->copy_newest(out, max);
-}
 
 StepStats Threads::step_stats() const {
   std::lock_guard<std::mutex> lock(results_mutex_);

@@ -34,6 +34,9 @@ namespace prox::runtime {
 
 enum class Role { Haptic = 0, Local = 1, Global = 2 };
 
+inline constexpr int kMaxContactsPerTool = 1 << 20;  // ThreadSettings::max_contacts
+inline constexpr int kMaxTraceCapacity = 1 << 20;    // ThreadSettings::trace_capacity: 17 min at 1 kHz, 216 MiB
+
 // How the haptic loop waits for its next period's absolute deadline.
 enum class HapticTiming {
   Auto,   // Spin when the haptic thread got a real-time priority or a core of its own, else Sleep
@@ -110,6 +113,18 @@ class Threads {
   void stop();
   bool running() const { return started_; }
 
+  // Game thread: tools made and destroyed while the threads run
+  // (docs/dynamic-scenes.md). add_tool starts driving the world's tool
+  // `body` (made, with its device, since the threads started); remove_tool
+  // fades its device's wrench out and waits until the haptic loop has
+  // written its last zero, so no callback of the device runs after it
+  // returns (unless the haptic loop is stalled past a second: then it gives
+  // up waiting). Either one publishes a new set of tools; what no thread can
+  // still see is freed by the game thread, never by the others.
+  void add_tool(std::uint32_t body);
+  void remove_tool(std::uint32_t body);
+  bool holds(std::uint32_t body) const;
+
   // Game thread.
   void set_tool_pose(std::uint32_t body, const Pose& pose);
   Pose tool_pose(std::uint32_t body) const;
@@ -120,7 +135,7 @@ class Threads {
   void contacts(std::uint32_t body, std::vector<Contact>& out) const;
   StepStats step_stats() const;
 
-  // Any thread. The tool's newest recorded ticks, at most `max`, oldest
+  // Game thread. The tool's newest recorded ticks, at most `max`, oldest
   // first; 0 when the recorder is off.
   std::size_t trace(std::uint32_t body, TraceSample* out, std::size_t max) const;
   LoopSummary loop_summary(Role role) const { return loop_stats_[int(role)].summary(); }
@@ -203,7 +218,37 @@ class Threads {
     SeqLock<PoseSample> rendered;               // haptic -> game: the proxy at the haptic rate
     double closest = kNoContact;                // haptic's own: the last trusted tick's, for the device
     std::unique_ptr<TraceRing<TraceSample>> trace;  // haptic -> any; null when the recorder is off
+    // Being removed (remove_tool): 0 live; 1 the game thread asks the haptic
+    // loop to fade its device out; 2 the haptic loop has written the last
+    // zero and calls the device no more.
+    std::atomic<int> retiring{0};
+    // The global search's own: the tool pose it last searched at, that
+    // pose's version, and the tool's mesh shape it searched.
+    Pose searched_pose;
+    std::uint64_t searched_version = 0, searched_shape = 0;
   };
+  // The tools the threads drive: immutable once published. Each thread
+  // takes the newest at the start of an iteration and says so in seen_.
+  struct ToolSet {
+    std::vector<Tool*> tools;
+    std::vector<int> of_body;  // body slot -> index in tools, or -1
+    std::uint64_t version = 0;
+  };
+
+  // A tool for the world's body `body`, its storage reserved: game thread.
+  std::unique_ptr<Tool> make_tool(std::uint32_t body);
+  // Publishes `next` as the newest set (game thread).
+  void publish(std::unique_ptr<ToolSet> next);
+  // Frees the sets and tools no thread can still see (game thread).
+  void reclaim();
+  // The newest set, for `role`'s iteration; said in seen_ (that role's thread).
+  const ToolSet& acquire(Role role);
+  // The newest set, on the game thread, which publishes them.
+  const ToolSet& current() const { return *sets_.back(); }
+  const Tool* tool_of(std::uint32_t body) const;
+  // The fade of the haptic loop's last ticks for a tool: one step towards a
+  // zero wrench; true once it is zero (haptic thread).
+  bool fade_step(Tool& tool, double dt);
 
   void haptic_main();
   void local_main();
@@ -212,7 +257,7 @@ class Threads {
   // Records a tick in the tool's flight recorder, if it has one.
   void record(Tool& tool, double now, const Pose& device, const Pose& proxy, const Wrench& w, double closest,
               std::uint32_t contacts, std::uint32_t flags);
-  void track(Tool& tool, std::vector<const LmdPair*>& scratch);
+  void track(Tool& tool, const ToolSet& set, std::vector<const LmdPair*>& scratch);
   // A new version of the scene on the local thread: pairs with bodies that
   // are gone are dropped at once (their contacts fade from the force as any
   // lost contact does); the others are tracked on their meshes' new shapes.
@@ -239,8 +284,17 @@ class Threads {
   ThreadSettings settings_;
   // The scene versions the local and global threads work with, each its own.
   std::shared_ptr<const SceneView> local_view_, global_view_;
+  // The sets published (the newest last) and every tool made, until
+  // reclaim() frees them; the game thread's.
+  std::vector<std::unique_ptr<ToolSet>> sets_;
+  struct Retired {
+    std::unique_ptr<Tool> tool;
+    std::uint64_t after = 0;  // freed once every thread has seen this set version
+  };
   std::vector<std::unique_ptr<Tool>> tools_;
-  std::vector<int> tool_of_body_;  // body slot -> index in tools_, or -1
+  std::vector<Retired> retired_;
+  std::atomic<const ToolSet*> set_{nullptr};
+  std::atomic<std::uint64_t> seen_[3] = {};
   // 1 once the threads are to stop; also the word they sleep on (a futex on
   // Linux), so stopping does not wait for the end of a period (a second at
   // 1 Hz).

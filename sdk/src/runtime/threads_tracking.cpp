@@ -34,9 +34,12 @@ void Threads::local_main() {
       continue;
     }
     const double start = now();
+    // The set first: a tool made since is in the view taken after it.
+    const ToolSet& set = acquire(Role::Local);
     if (world_.latest_view(local_view_))
-      for (auto& tool : tools_) adopt_view(*tool);
-    for (auto& tool : tools_) track(*tool, scratch);
+      for (Tool* tool : set.tools) adopt_view(*tool);
+    for (Tool* tool : set.tools)
+      if (tool->retiring.load(std::memory_order_relaxed) == 0) track(*tool, set, scratch);
     pace(Role::Local, period, start, previous, deadline);
   }
 }
@@ -55,12 +58,12 @@ void Threads::adopt_view(Tool& tool) {
   if (tool.local_pairs.size() != before) tool.losses.fetch_add(1, std::memory_order_relaxed);
 }
 
-void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
+void Threads::track(Tool& tool, const ToolSet& set, std::vector<const LmdPair*>& scratch) {
   const bool adopted = tool.global.update();
   // A global result searched on a newer scene than this thread's: the
   // bodies it names are in that version or a later one.
   if (adopted && tool.global.front().view > local_view_->version && world_.latest_view(local_view_))
-    for (auto& t : tools_) adopt_view(*t);
+    for (Tool* t : set.tools) adopt_view(*t);
   const SceneView& view = *local_view_;
   const MeshData& tool_mesh = *view.bodies[tool.body].mesh;
   const Method method = world_.settings_.method;
@@ -214,9 +217,6 @@ void Threads::global_main() {
   PairMap pairs;
   std::vector<PairInRange> in_range;
   Broadphase broadphase;
-  std::vector<Pose> last_tool_pose(tools_.size());
-  std::vector<std::uint64_t> tool_version(tools_.size(), 0);
-  std::vector<std::uint64_t> tool_shape(tools_.size(), 0);  // the tool's mesh version last searched
   std::uint64_t sequence = 0;
   while (!stop_.load(std::memory_order_relaxed)) {
     if (wait_while_stalled(Role::Global)) {
@@ -225,6 +225,8 @@ void Threads::global_main() {
       continue;
     }
     const double start = now();
+    // The set first: a tool made since is in the view taken after it.
+    const ToolSet& set = acquire(Role::Global);
     {
       // The game thread's moves: copied (and the tree rebuilt) only when
       // something other than a tool moved.
@@ -238,19 +240,20 @@ void Threads::global_main() {
     // The tools' poses from the haptic loop; a version that moves only when
     // the pose does, so a still tool costs no search.
     std::vector<BodyPose>& poses = broadphase.poses;
-    for (std::size_t k = 0; k < tools_.size(); ++k) {
+    for (Tool* tool : set.tools) {
       // A constrained tool is searched where its proxy is.
-      const PoseSample sample = tools_[k]->constrained ? tools_[k]->proxy.load() : tools_[k]->pose.load();
-      const bool moved = std::memcmp(&sample.pose, &last_tool_pose[k], sizeof(Pose)) != 0;
+      const PoseSample sample = tool->constrained ? tool->proxy.load() : tool->pose.load();
+      const bool moved = std::memcmp(&sample.pose, &tool->searched_pose, sizeof(Pose)) != 0;
       // A tool whose mesh took a new shape is searched again too.
-      const std::uint64_t shape = view.bodies[tools_[k]->body].mesh->version;
-      if (moved || tool_version[k] == 0 || shape != tool_shape[k]) ++tool_version[k], last_tool_pose[k] = sample.pose;
-      tool_shape[k] = shape;
-      poses[tools_[k]->body] = {last_tool_pose[k], tool_version[k]};
+      const std::uint64_t shape = view.bodies[tool->body].mesh->version;
+      if (moved || tool->searched_version == 0 || shape != tool->searched_shape)
+        ++tool->searched_version, tool->searched_pose = sample.pose;
+      tool->searched_shape = shape;
+      poses[tool->body] = {tool->searched_pose, tool->searched_version};
     }
     StepStats stats;
-    for (std::size_t k = 0; k < tools_.size(); ++k) {
-      Tool* tool = tools_[k].get();
+    for (Tool* tool : set.tools) {
+      if (tool->retiring.load(std::memory_order_relaxed) != 0) continue;
       const int searched_before = stats.pairs_searched;
       world_.search_tool(tool->body, view, broadphase, pairs, in_range, stats);
       for (const PairInRange& p : in_range) stats.contacts += static_cast<int>(p.slot->lmds.size());
@@ -263,12 +266,12 @@ void Threads::global_main() {
         same_pairs = in_range[i].other == tool->published_others[i];
       // A constrained tool's proxy must also learn that nothing is in range
       // where it now is (its anchor moves with each result).
-      const bool proxy_moved = tool->constrained && tool->published_version != tool_version[k];
+      const bool proxy_moved = tool->constrained && tool->published_version != tool->searched_version;
       if (stats.pairs_searched == searched_before && same_pairs && !proxy_moved &&
           losses == tool->published_losses && tool->published_view == view.version)
         continue;
       tool->published_view = view.version;
-      tool->published_version = tool_version[k];
+      tool->published_version = tool->searched_version;
       tool->published_losses = losses;
       tool->published_others.clear();
       for (const PairInRange& p : in_range) tool->published_others.push_back(p.other);

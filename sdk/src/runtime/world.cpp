@@ -42,7 +42,36 @@ void World::set_pose(Handle h, const Pose& pose) {
   if (b.type != BodyType::Tool) ++scene_version_;
 }
 
-void World::set_device(Handle tool, const Device& device) { bodies_[tool.index].device = device; }
+int World::device_holder(const void* user) const {
+  for (std::uint32_t i = 0; i < bodies_.size(); ++i)
+    if (user && bodies_[i].alive && bodies_[i].type == BodyType::Tool && bodies_[i].device.user == user)
+      return static_cast<int>(i);
+  return -1;
+}
+
+void World::set_device(Handle tool, const Device& device) {
+  BodySlot& b = bodies_[tool.index];
+  if (!running()) {
+    b.device = device;
+    return;
+  }
+  // While the threads run: the old device fades out and is let go of, and
+  // the tool is driven anew from where it was, its force fading in once its
+  // contacts come (docs/dynamic-scenes.md).
+  const Pose device_pose = threads_->tool_pose(tool.index);
+  const Pose proxy = threads_->proxy_pose(tool.index);
+  threads_->remove_tool(tool.index);
+  b.device = device;
+  b.device_pose = device_pose;
+  {
+    std::lock_guard<std::mutex> lock(scene_mutex_);
+    b.pose = constrained(tool) ? proxy : device_pose;
+    b.pose_version += 1;
+  }
+  b.contacts.clear();
+  b.wrench = Wrench{};
+  threads_->add_tool(tool.index);
+}
 
 std::uint32_t World::add_scripted_device(std::unique_ptr<ScriptedDevice> device) {
   scripted_devices_.push_back(std::move(device));

@@ -202,9 +202,13 @@ class World {
   int tool_count() const;
 
   // A device holds the tool while the threads run (nullptr callbacks: none;
-  // the game thread's set_pose moves it then). Not while the threads run.
+  // the game thread's set_pose moves it then). While they run, the old
+  // device is faded out and let go of before this returns.
   void set_device(Handle tool, const Device& device);
   const Device& device(Handle tool) const { return bodies_[tool.index].device; }
+  // The live tool whose device reads through `user` (a built-in device's
+  // object), or -1.
+  int device_holder(const void* user) const;
   // Scripted devices the world owns (they live as long as it does).
   std::uint32_t add_scripted_device(std::unique_ptr<ScriptedDevice> device);
   ScriptedDevice* scripted_device(std::uint32_t index) const {
@@ -221,9 +225,9 @@ class World {
   bool owns_device(const StreamDevice* device) const;
 
   // The threads (docs/threading.md). start_threads fails (false, with
-  // `status`) on bad settings; while they run, meshes and static and
-  // movable bodies may be created, destroyed and deformed (the C API
-  // refuses tools, and the meshes tools hold), and step() is refused.
+  // `status`) on bad settings; while they run, meshes and bodies may be
+  // created, destroyed and deformed (the C API refuses deforming a mesh a
+  // tool holds), devices changed, and step() is refused.
   bool start_threads(const ThreadSettings& settings, Status& status);
   void stop_threads();
   bool running() const;

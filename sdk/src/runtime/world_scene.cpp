@@ -145,6 +145,10 @@ Handle World::create_body(Handle mesh, BodyType type, const Pose& pose, const Ve
   meshes_[mesh.index].users += 1;
   ++scene_version_;
   shape_changed();
+  if (lock.owns_lock()) lock.unlock();
+  // A tool made while the threads run: published to them after the view
+  // that holds its body.
+  if (type == BodyType::Tool && running()) threads_->add_tool(i);
   return {i, b.generation};
 }
 
@@ -153,6 +157,8 @@ bool World::body_alive(Handle h) const {
 }
 
 void World::destroy_body(Handle h) {
+  // A tool's device is faded out and let go of before its body goes.
+  if (running() && bodies_[h.index].type == BodyType::Tool) threads_->remove_tool(h.index);
   std::unique_lock<std::mutex> lock(scene_mutex_, std::defer_lock);
   if (running()) lock.lock();
   BodySlot& b = bodies_[h.index];

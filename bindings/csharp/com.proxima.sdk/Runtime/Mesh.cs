@@ -56,7 +56,6 @@ namespace Proxima
                                                       out triangles));
         }
 
-        /// <summary>Fails while bodies use the mesh.</summary>
         /// <summary>Deforms the mesh: x, y, z per vertex in the order GetTriangles hands them out, as
         /// many vertices as the mesh has (Info.VertexCount). The bodies using it take the new shape;
         /// also while the threads run, at frame rate (docs/dynamic-scenes.md). Game thread.</summary>
@@ -69,6 +68,7 @@ namespace Proxima
             Native.Check(Native.proxMesh_SetVertices(id, positions, (uint)(positions.Length / 3)));
         }
 
+        /// <summary>Fails while bodies use the mesh.</summary>
         public void Destroy() => Native.Check(Native.proxMesh_Destroy(id));
 
         public bool Equals(Mesh o) =>

@@ -83,13 +83,15 @@ namespace Proxima.Tests
             {
                 Support.Throws(Result.Busy, "already running", () => world.StartThreads(ThreadSettings.Default));
                 Support.Throws(Result.Busy, "StopThreads", world.Step);
-                // Meshes and static bodies come and go while the threads run; tools stay.
+                // Meshes, bodies and tools come and go while the threads run; a tool's mesh keeps its shape.
                 Mesh more = Support.Cube(world);
                 Body block = world.CreateBody(more, BodyType.Static, new Pose(new Vec3(0, 1, 0), Quat.Identity));
                 block.Destroy();
+                Body second = world.CreateBody(more, BodyType.Tool, new Pose(new Vec3(0, -1, 0), Quat.Identity));
+                more.GetTriangles(out double[] corners, out uint[] _);
+                Support.Throws(Result.Busy, "a tool holds the mesh", () => more.SetVertices(corners));
+                second.Destroy();
                 more.Destroy();
-                Support.Throws(Result.Busy, "stopped", () => world.CreateBody(cube, BodyType.Tool, Pose.Identity));
-                Support.Throws(Result.Busy, "stopped", tool.Destroy);
                 tool.Pose = new Pose(new Vec3(0.1015, 0, 0), Quat.Identity);
                 Thread.Sleep(200);
                 Assert.IsTrue(world.GetThreadStats(ThreadRole.Haptic).Running);
@@ -144,7 +146,9 @@ namespace Proxima.Tests
             world.StartThreads(ThreadSettings.Default);
             Thread.Sleep(400);
             Support.Throws(Result.Busy, "device", () => tool.Pose = Near);
-            Support.Throws(Result.Busy, "", () => tool.ClearDevice());
+            // Devices change while the threads run: the old one is faded out first.
+            tool.ClearDevice();
+            tool.SetDevice(device);
             world.StopThreads();
             ScriptedDeviceRecord r = device.Record;
             Assert.Greater(r.Reads, 20UL, "the haptic loop read the device");
