@@ -5,6 +5,7 @@
 // These include tinygltf's declarations; the implementation, below, is
 // then included once (its part after the header guard is not guarded).
 #include "io/gltf_accessor.h"
+#include "io/gltf_rig.h"
 
 // tinygltf is compiled here and nowhere else, without any image support: no
 // stb_image, external images are not even opened, embedded ones go to a no-op
@@ -46,6 +47,8 @@ using gltf_detail::check_glb;
 using gltf_detail::component_size;
 using gltf_detail::component_type_name;
 using gltf_detail::kMaxU32;
+using gltf_detail::LocalMesh;
+using gltf_detail::MeshInstance;
 using gltf_detail::type_name;
 using gltf_detail::GlbLayout;
 using gltf_detail::precheck_json;
@@ -94,11 +97,6 @@ std::string trim(std::string s) {
 // ---------------------------------------------------------------------------
 // The scene
 
-struct LocalMesh {  // one mesh's triangles in its own coordinates
-  bool decoded = false;
-  std::vector<glm::dvec3> positions;
-  std::vector<std::uint32_t> indices;
-};
 
 class Decoder {
  public:
@@ -161,7 +159,7 @@ class Decoder {
       return {StatusCode::Unsupported,
               name_ + ": the scene has no triangles (point and line primitives are not read)"};
     }
-    return Status::ok();
+    return gltf_detail::has_rig(model_, instances_) ? pose_at_rest(mode, out) : Status::ok();
   }
 
  private:
@@ -275,6 +273,8 @@ class Decoder {
     }
     GltfMesh& target = out.back();
     const std::size_t base = target.positions.size() / 3;
+    instances_.push_back({index, node.mesh, static_cast<std::uint32_t>(flat_vertices_)});
+    flat_vertices_ += mesh.positions.size();
     if (base == 0) {  // a fresh soup (per node); merged ones grow geometrically
       target.positions.reserve(3 * mesh.positions.size());
       target.indices.reserve(mesh.indices.size());
@@ -293,18 +293,39 @@ class Decoder {
     return Status::ok();
   }
 
-  // Every triangle primitive of a mesh, in the mesh's coordinates.
-  //
-  // Skinned meshes are taken as authored (their bind-pose coordinates) and
-  // placed by their node's transform like any other mesh; joints, weights,
-  // inverse bind matrices, morph targets and animations are not read. This is
-  // not glTF's rest pose: glTF ignores a skinned mesh node's transform and
-  // places the vertices by joint world matrix x inverse bind matrix. The two
-  // agree when the inverse bind matrices were made from the mesh node's world
-  // transform; in RiggedSimple.glb they differ by the Armature node's quarter
-  // turn about the cylinder's axis. A skinned mesh quantized by
+  // A file with skins, morph targets or animations: its rig (gltf_rig.cpp)
+  // poses the vertices at rest, replacing the node-transformed ones above.
+  // That differs for skinned meshes (glTF ignores their node's transform and
+  // places them by joint world x inverse bind matrix) and morphed ones (their
+  // default weights). Merged: the soup keeps the rig.
+  Status pose_at_rest(GltfSceneMode mode, std::vector<GltfMesh>& out) {
+    if (flat_vertices_ > kMaxU32)
+      return {StatusCode::Unsupported, name_ + ": a rigged scene has more than 4294967295 vertices"};
+    std::shared_ptr<rig::Rig> rig;
+    Status status = gltf_detail::read_rig(model_, name_, meshes_, instances_, warnings_, rig);
+    if (!status) return status;
+    std::vector<Vec3> rest;
+    rig->positions(rig->rest_pose(), {}, rest);
+    for (std::size_t i = 0; i < rig->instances.size(); ++i) {
+      const rig::Instance& in = rig->instances[i];
+      GltfMesh& target = out[mode == GltfSceneMode::Merged ? 0 : i];
+      const std::size_t base = mode == GltfSceneMode::Merged ? in.first_vertex : 0;
+      const std::size_t count = rig->meshes[in.mesh].positions.size();
+      for (std::size_t v = 0; v < count; ++v) {
+        const Vec3& p = rest[in.first_vertex + v];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+          return error("node " + std::to_string(in.node) + ": a vertex of its mesh overflows to infinity at rest");
+        std::copy(&p.x, &p.x + 3, target.positions.begin() + static_cast<std::ptrdiff_t>(3 * (base + v)));
+      }
+    }
+    if (mode == GltfSceneMode::Merged) out[0].rig = std::move(rig);
+    return Status::ok();
+  }
+
+  // Every triangle primitive of a mesh, in the mesh's coordinates, with
+  // each primitive's vertex range (for the rig). A skinned mesh quantized by
   // KHR_mesh_quantization keeps its dequantization in the inverse bind
-  // matrices, so it comes out in quantized units.
+  // matrices; it comes out right only through the rig.
   Status decode_mesh(int mesh_index, LocalMesh& mesh) {
     const tinygltf::Mesh& source = model_.meshes[static_cast<std::size_t>(mesh_index)];
     // POSITION accessor -> (its first vertex in `mesh`, its vertex count).
@@ -352,6 +373,7 @@ class Decoder {
       }
       const std::uint32_t base = found->second.first;
       const std::size_t vertex_count = found->second.second;
+      mesh.primitives.push_back({static_cast<int>(p), base, static_cast<std::uint32_t>(vertex_count)});
 
       vertex.clear();
       if (primitive.indices != -1) {
@@ -441,6 +463,8 @@ class Decoder {
   AccessorReader reader_;
   std::set<int> warned_;
   std::vector<LocalMesh> meshes_;
+  std::vector<MeshInstance> instances_;  // in `out`'s order, for the rig
+  std::uint64_t flat_vertices_ = 0;      // over every instance (the merged soup's count)
 };
 
 // `path` names the file in messages and gives its extension, stem and the
