@@ -60,6 +60,7 @@ bool World::destroy_mesh(Handle h, Status& status) {
   }
   slot.alive = false;
   slot.data.reset();
+  rigs_.erase(h.index);
   return true;
 }
 

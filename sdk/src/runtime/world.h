@@ -8,6 +8,7 @@
 #include "coupling/proxy.h"
 #include "runtime/body_tree.h"
 #include "runtime/device.h"
+#include "runtime/mesh_rig.h"
 #include "runtime/scripted_device.h"
 #include "runtime/stream_device.h"
 
@@ -130,6 +131,13 @@ class World {
   bool destroy_mesh(Handle h, Status& status);
   const Mesh& mesh(Handle h) const { return meshes_[h.index].data->mesh; }
   const Snch& snch(Handle h) const { return *meshes_[h.index].data->snch; }
+
+  // glTF rigs (runtime/mesh_rig.h, docs/dynamic-scenes.md): the rig a mesh
+  // was loaded with, whose input vertices must be the mesh's, and the game
+  // thread's pose of it; nullptr for a mesh without one. Game thread.
+  bool set_rig(Handle mesh, std::shared_ptr<const rig::Rig> rig, Status& status);
+  const MeshRig* rig(Handle mesh) const;
+  MeshRig* rig(Handle mesh);
 
   // Bodies.
   Handle create_body(Handle mesh, BodyType type, const Pose& pose, const Vec3& reference_point,
@@ -284,6 +292,7 @@ class World {
   std::vector<MeshSlot> meshes_;
   std::vector<BodySlot> bodies_;
   PairMap pairs_;
+  std::unordered_map<std::uint32_t, MeshRig> rigs_;  // by mesh slot, for rigged meshes
   Broadphase broadphase_;  // the deterministic step's
   // Moves with every change the broadphase must see: bodies created or
   // destroyed, static and movable bodies moved (tools move every step and
