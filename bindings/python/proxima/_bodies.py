@@ -63,6 +63,17 @@ class Mesh:
                                         triangles))
         return v, t
 
+    def set_vertices(self, vertices):
+        """Deforms the mesh: new positions (N, 3), in the order triangles()
+        hands the vertices out, N the mesh's vertex count; the topology
+        stays. Every body using the mesh takes the new shape, also while the
+        threads run (docs/dynamic-scenes.md). Copied."""
+        v = np.ascontiguousarray(vertices, dtype=np.float64)
+        if v.ndim != 2 or v.shape[1] != 3:
+            raise invalid(f"set_vertices: expected an (N, 3) array, got shape {v.shape}")
+        check(lib.proxMesh_SetVertices(self._idp[0], ffi.from_buffer("double[]", v) if v.size else ffi.NULL,
+                                       len(v)))
+
     def destroy(self):
         """Destroys the mesh; refused while bodies use it."""
         check(lib.proxMesh_Destroy(self._idp[0]))

@@ -183,8 +183,8 @@ PROX_API proxMeshDef proxDefaultMeshDef(void);
 
 /* Validates the data (finite coordinates, indices in range, at least one
  * non-degenerate triangle), welds vertices by position, builds the topology
- * and the hierarchy. The data is copied. Game thread; meshes cannot be
- * created or destroyed while the threads run (PROX_ERROR_BUSY). */
+ * and the hierarchy, on the calling thread. The data is copied. Game thread;
+ * also while the threads run (docs/dynamic-scenes.md). */
 PROX_API proxResult proxWorld_CreateMesh(proxWorldId world, const proxMeshDef* def, proxMeshId* mesh);
 
 /* Reads a mesh from an OBJ, glTF (.gltf) or binary glTF (.glb) file; a glTF
@@ -200,7 +200,8 @@ PROX_API proxResult proxWorld_LoadMesh(proxWorldId world, const char* path, prox
 PROX_API proxResult proxWorld_LoadMeshFromMemory(proxWorldId world, const void* data, uint64_t size,
                                                  const char* name, proxMeshId* mesh);
 
-/* Destroys a mesh; fails while bodies use it. Game thread. */
+/* Destroys a mesh; fails while bodies use it. Game thread; also while the
+ * threads run. */
 PROX_API proxResult proxMesh_Destroy(proxMeshId mesh);
 
 typedef struct proxMeshInfo {
@@ -226,6 +227,19 @@ PROX_API proxResult proxMesh_GetInfo(proxMeshId mesh, proxMeshInfo* info);
 PROX_API proxResult proxMesh_GetTriangles(proxMeshId mesh, double* positions, uint32_t vertexCapacity,
                                           uint32_t* vertexCount, uint32_t* indices, uint32_t triangleCapacity,
                                           uint32_t* triangleCount);
+
+/* Deforms a mesh: new positions for its vertices, the same topology. x, y, z
+ * per vertex (3 * vertexCount doubles, in the mesh's own frame), in the
+ * order proxMesh_GetTriangles hands the vertices out; vertexCount must be
+ * the mesh's (proxMeshInfo.vertexCount). The hierarchy is refitted on the
+ * calling thread, or rebuilt there when refitting has loosened it too far
+ * (docs/dynamic-scenes.md); every body using the mesh takes the new shape:
+ * at the next proxWorld_Step, or at the threads' next iteration while they
+ * run, where local tracking carries the contacts onto it. A count that
+ * differs or a non-finite coordinate (named by vertex) is refused and
+ * changes nothing. Game thread, at frame rate; while the threads run,
+ * PROX_ERROR_BUSY for a mesh a tool holds. */
+PROX_API proxResult proxMesh_SetVertices(proxMeshId mesh, const double* positions, uint32_t vertexCount);
 
 /* What loading the mesh's file skipped without failing: attributes Proxima
  * does not read (NORMAL, TEXCOORD_0, ...) that are invalid, say a NORMAL
@@ -277,7 +291,10 @@ typedef struct proxBodyDef {
 } proxBodyDef;
 
 PROX_API proxBodyDef proxDefaultBodyDef(void);
-/* Game thread. Create and destroy: PROX_ERROR_BUSY while the threads run.
+/* Game thread. Create and destroy: also while the threads run for static and
+ * movable bodies (a destroyed body's contacts fade from the force as any lost
+ * contact does; a new one is found by the next global search); tools:
+ * PROX_ERROR_BUSY while the threads run.
  * SetPose while they run: taken at the threads' next iteration; refused for
  * a tool a device holds. GetPose of a tool while they run: the pose the
  * haptic loop last read. */

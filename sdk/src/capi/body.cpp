@@ -85,7 +85,6 @@ proxResult proxWorld_CreateBody(proxWorldId world, const proxBodyDef* def, proxB
     need(body, "body");
     *body = proxBodyId{};
     runtime::World& w = world_of(world);
-    need_stopped(w);
     need(def, "def");
     need_def(*def, "proxDefaultBodyDef");
     runtime::World* mesh_world = nullptr;
@@ -101,6 +100,10 @@ proxResult proxWorld_CreateBody(proxWorldId world, const proxBodyDef* def, proxB
         break;
       case PROX_BODY_TOOL:
         type = runtime::BodyType::Tool;
+        if (w.running())
+          fail(PROX_ERROR_BUSY,
+               "the world's threads are running: tools are created with the threads stopped (static and "
+               "movable bodies may be created while they run)");
         break;
       default:
         fail(PROX_ERROR_INVALID_ARGUMENT, "def->type is not a proxBodyType");
@@ -135,7 +138,10 @@ proxResult proxBody_Destroy(proxBodyId body) {
   return guard("proxBody_Destroy", [&] {
     runtime::World* w = nullptr;
     const runtime::Handle h = body_of(body, w);
-    need_stopped(*w);
+    if (w->running() && w->type(h) == runtime::BodyType::Tool)
+      fail(PROX_ERROR_BUSY,
+           "body is a tool and the world's threads are running: tools are destroyed with the threads stopped "
+           "(static and movable bodies may be destroyed while they run)");
     w->destroy_body(h);
   });
 }

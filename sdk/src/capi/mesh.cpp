@@ -123,7 +123,6 @@ proxResult proxWorld_CreateMesh(proxWorldId world, const proxMeshDef* def, proxM
     need(mesh, "mesh");
     *mesh = proxMeshId{};
     runtime::World& w = world_of(world);
-    need_stopped(w);
     need(def, "def");
     need_def(*def, "proxDefaultMeshDef");
     *mesh = add_mesh(world, w, {def->positions, def->vertexCount, def->indices, def->triangleCount});
@@ -135,7 +134,6 @@ proxResult proxWorld_LoadMesh(proxWorldId world, const char* path, proxMeshId* m
     need(mesh, "mesh");
     *mesh = proxMeshId{};
     runtime::World& w = world_of(world);
-    need_stopped(w);
     need(path, "path");
     *mesh = load_mesh(world, w, path);
   });
@@ -147,7 +145,6 @@ proxResult proxWorld_LoadMeshFromMemory(proxWorldId world, const void* data, uin
     need(mesh, "mesh");
     *mesh = proxMeshId{};
     runtime::World& w = world_of(world);
-    need_stopped(w);
     need(name, "name");
     if (size == 0) fail(PROX_ERROR_INVALID_ARGUMENT, std::string(name) + ": size is 0 (no bytes to read)");
     need(data, "data");
@@ -163,7 +160,6 @@ proxResult proxMesh_Destroy(proxMeshId mesh) {
   return guard("proxMesh_Destroy", [&] {
     runtime::World* w = nullptr;
     const runtime::Handle h = mesh_of(mesh, w);
-    need_stopped(*w);
     Status s;
     if (!w->destroy_mesh(h, s)) fail(PROX_ERROR_INVALID_ARGUMENT, s.message());
     std::lock_guard<std::mutex> lock(g_worlds_mutex);
@@ -213,6 +209,20 @@ proxResult proxMesh_GetTriangles(proxMeshId mesh, double* positions, uint32_t ve
     }
     for (uint32_t t = 0; t < m.triangle_count(); ++t)
       for (int k = 0; k < 3; ++k) indices[3 * t + k] = m.indices(t)[k];
+  });
+}
+
+proxResult proxMesh_SetVertices(proxMeshId mesh, const double* positions, uint32_t vertexCount) {
+  return guard("proxMesh_SetVertices", [&] {
+    runtime::World* w = nullptr;
+    const runtime::Handle h = mesh_of(mesh, w);
+    need(positions, "positions");
+    if (w->running() && w->mesh_held_by_tool(h))
+      fail(PROX_ERROR_BUSY,
+           "a tool holds the mesh and the world's threads are running: a tool's mesh is deformed with the "
+           "threads stopped (proxWorld_StopThreads)");
+    Status s;
+    if (!w->set_vertices(h, positions, vertexCount, s)) fail(PROX_ERROR_INVALID_ARGUMENT, s.message());
   });
 }
 

@@ -219,34 +219,7 @@ Mesh Mesh::build(const MeshInput& in, Status& status) {
   stats.vertices = vertex_count;
   stats.triangles = triangle_count;
 
-  mesh.bounds_.min = mesh.bounds_.max = mesh.vertices_[0];
-  for (const Vec3& p : mesh.vertices_) {
-    mesh.bounds_.min = glm::min(mesh.bounds_.min, p);
-    mesh.bounds_.max = glm::max(mesh.bounds_.max, p);
-  }
-
-  // Face normals, and vertex normals weighted by the angle at the vertex: a
-  // face split into more triangles does not weigh more.
-  mesh.face_normals_.assign(triangle_count, Vec3(0.0));
-  std::vector<Vec3> normal_sum(vertex_count, Vec3(0.0));
-  std::vector<double> weight_sum(vertex_count, 0.0);
-  for (std::uint32_t t = 0; t < triangle_count; ++t) {
-    const auto& tri = mesh.triangles_[t];
-    const Vec3 &a = mesh.vertices_[tri[0]], &b = mesh.vertices_[tri[1]], &c = mesh.vertices_[tri[2]];
-    if (geometry::collinear3d(a, b, c)) {
-      ++stats.zero_area_triangles;
-      continue;
-    }
-    const FaceGeometry g = face_geometry(a, b, c);
-    mesh.face_normals_[t] = g.normal;
-    for (int k = 0; k < 3; ++k) {
-      normal_sum[tri[k]] += g.angle[k] * g.normal;
-      weight_sum[tri[k]] += g.angle[k];
-    }
-  }
-  mesh.vertex_normals_.assign(vertex_count, Vec3(0.0));
-  for (std::uint32_t v = 0; v < vertex_count; ++v)
-    mesh.vertex_normals_[v] = normalized_unless_cancelled(normal_sum[v], weight_sum[v]);
+  mesh.compute_geometry();
 
   // Vertex -> triangles, by counting sort: ascending because triangles are
   // visited in order.
@@ -303,11 +276,67 @@ Mesh Mesh::build(const MeshInput& in, Status& status) {
       if (sharing == 1) ++stats.boundary_edges;
       if (sharing >= 3) ++stats.nonmanifold_edges;
       mesh.edge_tri_offsets_.push_back(static_cast<std::uint32_t>(mesh.edge_tri_.size()));
-      mesh.longest_edge_ = std::max(mesh.longest_edge_, length_of(mesh.vertices_[u] - mesh.vertices_[v]));
       run = it;
     }
   }
   return mesh;
+}
+
+void Mesh::compute_geometry() {
+  const std::uint32_t vertex_count = this->vertex_count();
+  const std::uint32_t triangle_count = this->triangle_count();
+  bounds_.min = bounds_.max = vertices_[0];
+  for (const Vec3& p : vertices_) {
+    bounds_.min = glm::min(bounds_.min, p);
+    bounds_.max = glm::max(bounds_.max, p);
+  }
+
+  // Face normals, and vertex normals weighted by the angle at the vertex: a
+  // face split into more triangles does not weigh more.
+  face_normals_.assign(triangle_count, Vec3(0.0));
+  std::vector<Vec3> normal_sum(vertex_count, Vec3(0.0));
+  std::vector<double> weight_sum(vertex_count, 0.0);
+  stats_.zero_area_triangles = 0;
+  longest_edge_ = 0.0;
+  for (std::uint32_t t = 0; t < triangle_count; ++t) {
+    const auto& tri = triangles_[t];
+    const Vec3 &a = vertices_[tri[0]], &b = vertices_[tri[1]], &c = vertices_[tri[2]];
+    longest_edge_ = std::max({longest_edge_, length_of(b - a), length_of(c - b), length_of(a - c)});
+    if (geometry::collinear3d(a, b, c)) {
+      ++stats_.zero_area_triangles;
+      continue;
+    }
+    const FaceGeometry g = face_geometry(a, b, c);
+    face_normals_[t] = g.normal;
+    for (int k = 0; k < 3; ++k) {
+      normal_sum[tri[k]] += g.angle[k] * g.normal;
+      weight_sum[tri[k]] += g.angle[k];
+    }
+  }
+  vertex_normals_.assign(vertex_count, Vec3(0.0));
+  for (std::uint32_t v = 0; v < vertex_count; ++v)
+    vertex_normals_[v] = normalized_unless_cancelled(normal_sum[v], weight_sum[v]);
+}
+
+Status Mesh::set_vertices(const double* positions, std::uint32_t count) {
+  if (count != vertex_count())
+    return invalid("vertexCount is " + std::to_string(count) + " but the mesh has " +
+                   std::to_string(vertex_count()) + " vertices (after welding)");
+  if (positions == nullptr) return invalid("positions is NULL");
+  static const char* const kAxis[3] = {"x", "y", "z"};
+  for (std::uint32_t v = 0; v < count; ++v)
+    for (int c = 0; c < 3; ++c) {
+      const double x = positions[std::size_t{3} * v + c];
+      if (!std::isfinite(x))
+        return invalid("vertex " + std::to_string(v) + " has a non-finite " + kAxis[c] + " coordinate (" +
+                       non_finite_name(x) + ")");
+    }
+  for (std::uint32_t v = 0; v < count; ++v) {
+    const double* p = positions + std::size_t{3} * v;
+    vertices_[v] = Vec3(p[0], p[1], p[2]);
+  }
+  compute_geometry();
+  return Status::ok();
 }
 
 Vec3 Mesh::edge_normal(std::uint32_t t, int k) const {

@@ -38,7 +38,7 @@ struct MeshInput {
   std::uint32_t triangle_count = 0;
 };
 
-// An immutable mesh: vertices welded by exact position (glTF and OBJ split
+// A mesh of fixed topology: vertices welded by exact position (glTF and OBJ split
 // vertices at UV and normal seams; adjacency must follow the surface), with
 // vertex -> triangles and edge -> triangles adjacency and face, edge and
 // vertex normals. Triangles keep the input's winding; normals point to the
@@ -49,6 +49,12 @@ class Mesh {
   // builds the topology. On error `status` names the offending input and the
   // returned mesh is empty.
   static Mesh build(const MeshInput& input, Status& status);
+
+  // Moves the vertices (x, y, z per welded vertex, `count` of them: the
+  // same number), keeping the topology; the normals, bounds and longest
+  // edge follow. On error (a count that differs, a non-finite coordinate,
+  // named by vertex) nothing changes.
+  Status set_vertices(const double* positions, std::uint32_t count);
 
   std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(vertices_.size()); }
   std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(triangles_.size()); }
@@ -102,6 +108,10 @@ class Mesh {
   double longest_edge() const { return longest_edge_; }
 
  private:
+  // Bounds, face and vertex normals, zero-area count and longest edge from
+  // the vertices and triangles.
+  void compute_geometry();
+
   std::vector<Vec3> vertices_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;
   std::vector<std::uint32_t> input_triangle_;

@@ -67,6 +67,7 @@ void default_cores(int cores[3]) { platform::default_cores(cores); }
 
 Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), settings_(settings) {
   epoch_ = Clock::now();
+  local_view_ = global_view_ = world.view();
   tool_of_body_.assign(world.bodies_.size(), -1);
   for (std::uint32_t i = 0; i < world.bodies_.size(); ++i) {
     const World::BodySlot& b = world.bodies_[i];
@@ -75,12 +76,7 @@ Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), 
     tool->body = i;
     tool->device = b.device;
     tool->reference_local = b.reference_point;
-    const Aabb& box = world.meshes_[b.mesh].data->mesh.bounds();
-    for (int corner = 0; corner < 8; ++corner) {
-      const Vec3 p((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
-                   (corner & 4) ? box.max.z : box.min.z);
-      tool->radius = std::max(tool->radius, glm::length(p - b.reference_point));
-    }
+    tool->radius = b.radius;
     const PoseSample start{b.tool.mode == coupling::ToolMode::Constrained ? b.device_pose : b.pose, 0.0};
     tool->pose.store(start);
     tool->game_pose.store(start);

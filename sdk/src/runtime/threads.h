@@ -151,17 +151,18 @@ class Threads {
     Wrench wrench;
   };
   struct GlobalPair {
-    std::uint32_t other = 0;
+    std::uint32_t other = 0, other_generation = 0;
     Pose other_pose;
     std::vector<LmdPair> lmds;
   };
   struct GlobalResult {
     std::vector<GlobalPair> pairs;
+    std::uint64_t view = 0;  // the scene version searched
     Pose tool_pose;  // searched at
     std::uint64_t sequence = 0;
   };
   struct LocalPair {
-    std::uint32_t other = 0;
+    std::uint32_t other = 0, other_generation = 0;
     Pose other_pose;
     LocalTracker tracker;
     std::vector<LmdPair> lmds;
@@ -196,6 +197,7 @@ class Threads {
     Pose anchor;                                // local's own: where the adopted global result searched
     bool anchored = false;                      // local's own: a global result adopted
     std::uint64_t published_version = 0;        // global's own: the tool pose version last handed over
+    std::uint64_t published_view = 0;           // global's own: the scene version last handed over
     std::vector<coupling::Obstacle> obstacles;  // local's own
     HapticRenderer renderer;                    // haptic's own
     SeqLock<PoseSample> rendered;               // haptic -> game: the proxy at the haptic rate
@@ -211,6 +213,10 @@ class Threads {
   void record(Tool& tool, double now, const Pose& device, const Pose& proxy, const Wrench& w, double closest,
               std::uint32_t contacts, std::uint32_t flags);
   void track(Tool& tool, std::vector<const LmdPair*>& scratch);
+  // A new version of the scene on the local thread: pairs with bodies that
+  // are gone are dropped at once (their contacts fade from the force as any
+  // lost contact does); the others are tracked on their meshes' new shapes.
+  void adopt_view(Tool& tool);
   // A constrained tool's proxy towards the device, on the local thread.
   void move_proxy(Tool& tool, const PoseSample& device);
   // Sleeps to the next period of `role` (or not at all when back to back);
@@ -231,6 +237,8 @@ class Threads {
 
   World& world_;
   ThreadSettings settings_;
+  // The scene versions the local and global threads work with, each its own.
+  std::shared_ptr<const SceneView> local_view_, global_view_;
   std::vector<std::unique_ptr<Tool>> tools_;
   std::vector<int> tool_of_body_;  // body slot -> index in tools_, or -1
   // 1 once the threads are to stop; also the word they sleep on (a futex on

@@ -34,14 +34,35 @@ void Threads::local_main() {
       continue;
     }
     const double start = now();
+    if (world_.latest_view(local_view_))
+      for (auto& tool : tools_) adopt_view(*tool);
     for (auto& tool : tools_) track(*tool, scratch);
     pace(Role::Local, period, start, previous, deadline);
   }
 }
 
+void Threads::adopt_view(Tool& tool) {
+  const SceneView& view = *local_view_;
+  const std::size_t before = tool.local_pairs.size();
+  tool.local_pairs.erase(std::remove_if(tool.local_pairs.begin(), tool.local_pairs.end(),
+                                        [&view](const LocalPair& lp) {
+                                          return !view.alive(lp.other, lp.other_generation);
+                                        }),
+                         tool.local_pairs.end());
+  // A constrained proxy's clearance was measured against what is gone or
+  // has changed shape: it is measured again.
+  if (tool.constrained) tool.proxy_state.clearance = -1.0;
+  if (tool.local_pairs.size() != before) tool.losses.fetch_add(1, std::memory_order_relaxed);
+}
+
 void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
-  const World::BodySlot& tool_body = world_.bodies_[tool.body];
-  const World::MeshData& tool_mesh = *world_.meshes_[tool_body.mesh].data;
+  const bool adopted = tool.global.update();
+  // A global result searched on a newer scene than this thread's: the
+  // bodies it names are in that version or a later one.
+  if (adopted && tool.global.front().view > local_view_->version && world_.latest_view(local_view_))
+    for (auto& t : tools_) adopt_view(*t);
+  const SceneView& view = *local_view_;
+  const MeshData& tool_mesh = *view.bodies[tool.body].mesh;
   const Method method = world_.settings_.method;
 
   // A new global result replaces the set of pairs; each pair's tracked LMDs
@@ -50,10 +71,10 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
   // LMDs from two different minima of a flat field, and both would count
   // them; the new patches replace the tracked ones.
   const bool join_tracked = method == Method::Original || !world_.settings_.patches.enabled();
-  const bool adopted = tool.global.update();
   if (adopted) {
     const GlobalResult& g = tool.global.front();
-    std::vector<LocalPair> next(g.pairs.size());
+    std::vector<LocalPair> next;
+    next.reserve(g.pairs.size());
     // A constrained proxy's clearance was measured against the bodies (and
     // the poses) of the last result: when they change it is measured again,
     // or the reach handed to the haptic loop could count on it for a body
@@ -61,14 +82,20 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
     bool same_obstacles = g.pairs.size() == tool.local_pairs.size();
     for (std::size_t i = 0; i < g.pairs.size(); ++i) {
       const GlobalPair& gp = g.pairs[i];
-      LocalPair& lp = next[i];
+      // A body destroyed since the search: its pair is not taken up.
+      if (!view.alive(gp.other, gp.other_generation)) {
+        same_obstacles = false;
+        continue;
+      }
+      LocalPair& lp = next.emplace_back();
       lp.other = gp.other;
+      lp.other_generation = gp.other_generation;
       lp.other_pose = gp.other_pose;
       lp.lmds = gp.lmds;
       if (method == Method::Original) lp.tracker = LocalTracker::original();
       bool seen = false;
       for (LocalPair& old : tool.local_pairs)
-        if (old.other == gp.other) {
+        if (old.other == gp.other && old.other_generation == gp.other_generation) {
           seen = std::memcmp(&old.other_pose, &gp.other_pose, sizeof(Pose)) == 0;
           lp.tracker = std::move(old.tracker);
           if (join_tracked) lp.lmds.insert(lp.lmds.end(), old.lmds.begin(), old.lmds.end());
@@ -92,8 +119,7 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
   std::size_t total = 0;
   std::uint32_t dropped = 0;
   for (LocalPair& lp : tool.local_pairs) {
-    const World::BodySlot& other = world_.bodies_[lp.other];
-    const World::MeshData& other_mesh = *world_.meshes_[other.mesh].data;
+    const MeshData& other_mesh = *view.bodies[lp.other].mesh;
     const PairQuery q{&other_mesh.mesh,     other_mesh.snch.get(), lp.other_pose,          &tool_mesh.mesh,
                       tool_mesh.snch.get(), sample.pose,           world_.settings_.cutoff};
     LocalTrackingStats stats;
@@ -152,8 +178,8 @@ void Threads::track(Tool& tool, std::vector<const LmdPair*>& scratch) {
 }
 
 void Threads::move_proxy(Tool& tool, const PoseSample& device) {
-  const World::BodySlot& tool_body = world_.bodies_[tool.body];
-  const World::MeshData& tool_mesh = *world_.meshes_[tool_body.mesh].data;
+  const SceneView& view = *local_view_;
+  const MeshData& tool_mesh = *view.bodies[tool.body].mesh;
   coupling::ProxyState& state = tool.proxy_state;
   // The constraints: the pairs' LMDs, tracked at the proxy at the last
   // update (or, just adopted, at the global search's pose).
@@ -164,8 +190,7 @@ void Threads::move_proxy(Tool& tool, const PoseSample& device) {
   for (const LocalPair& lp : tool.local_pairs) {
     for (const LmdPair& p : lp.lmds)
       if (coupling::make_constraint(p, reference, c)) state.constraints.push_back(c);
-    const World::BodySlot& other = world_.bodies_[lp.other];
-    const World::MeshData& other_mesh = *world_.meshes_[other.mesh].data;
+    const MeshData& other_mesh = *view.bodies[lp.other].mesh;
     tool.obstacles.push_back({&other_mesh.mesh, other_mesh.snch.get(), lp.other_pose});
   }
   const coupling::ProxyTool proxy_tool{&tool_mesh.mesh, tool_mesh.snch.get(), tool.reference_local,
@@ -191,6 +216,7 @@ void Threads::global_main() {
   Broadphase broadphase;
   std::vector<Pose> last_tool_pose(tools_.size());
   std::vector<std::uint64_t> tool_version(tools_.size(), 0);
+  std::vector<std::uint64_t> tool_shape(tools_.size(), 0);  // the tool's mesh version last searched
   std::uint64_t sequence = 0;
   while (!stop_.load(std::memory_order_relaxed)) {
     if (wait_while_stalled(Role::Global)) {
@@ -203,9 +229,12 @@ void Threads::global_main() {
       // The game thread's moves: copied (and the tree rebuilt) only when
       // something other than a tool moved.
       std::lock_guard<std::mutex> lock(world_.scene_mutex_);
+      // The view and the poses in one piece: a body made since is in both.
+      global_view_ = world_.view_;
       world_.refresh_poses(broadphase);
-      world_.update_broadphase(broadphase, world_.scene_version_);
+      world_.update_broadphase(broadphase, world_.scene_version_, *global_view_);
     }
+    const SceneView& view = *global_view_;
     // The tools' poses from the haptic loop; a version that moves only when
     // the pose does, so a still tool costs no search.
     std::vector<BodyPose>& poses = broadphase.poses;
@@ -213,14 +242,17 @@ void Threads::global_main() {
       // A constrained tool is searched where its proxy is.
       const PoseSample sample = tools_[k]->constrained ? tools_[k]->proxy.load() : tools_[k]->pose.load();
       const bool moved = std::memcmp(&sample.pose, &last_tool_pose[k], sizeof(Pose)) != 0;
-      if (moved || tool_version[k] == 0) ++tool_version[k], last_tool_pose[k] = sample.pose;
+      // A tool whose mesh took a new shape is searched again too.
+      const std::uint64_t shape = view.bodies[tools_[k]->body].mesh->version;
+      if (moved || tool_version[k] == 0 || shape != tool_shape[k]) ++tool_version[k], last_tool_pose[k] = sample.pose;
+      tool_shape[k] = shape;
       poses[tools_[k]->body] = {last_tool_pose[k], tool_version[k]};
     }
     StepStats stats;
     for (std::size_t k = 0; k < tools_.size(); ++k) {
       Tool* tool = tools_[k].get();
       const int searched_before = stats.pairs_searched;
-      world_.search_tool(tool->body, broadphase, pairs, in_range, stats);
+      world_.search_tool(tool->body, view, broadphase, pairs, in_range, stats);
       for (const PairInRange& p : in_range) stats.contacts += static_cast<int>(p.slot->lmds.size());
       // Nothing searched, the same pairs in range and no LMDs lost since:
       // the local thread already has this answer (and has tracked it
@@ -233,8 +265,9 @@ void Threads::global_main() {
       // where it now is (its anchor moves with each result).
       const bool proxy_moved = tool->constrained && tool->published_version != tool_version[k];
       if (stats.pairs_searched == searched_before && same_pairs && !proxy_moved &&
-          losses == tool->published_losses)
+          losses == tool->published_losses && tool->published_view == view.version)
         continue;
+      tool->published_view = view.version;
       tool->published_version = tool_version[k];
       tool->published_losses = losses;
       tool->published_others.clear();
@@ -243,10 +276,12 @@ void Threads::global_main() {
       r.pairs.resize(in_range.size());
       for (std::size_t i = 0; i < in_range.size(); ++i) {
         r.pairs[i].other = in_range[i].other;
+        r.pairs[i].other_generation = view.bodies[in_range[i].other].generation;
         r.pairs[i].other_pose = poses[in_range[i].other].pose;
         r.pairs[i].lmds = in_range[i].slot->lmds;
       }
       r.tool_pose = poses[tool->body].pose;
+      r.view = view.version;
       r.sequence = ++sequence;
       tool->global.publish();
     }

@@ -17,14 +17,6 @@ Wrench clip_wrench(Wrench w, const ForceSettings& settings) {
   return w;
 }
 
-template <typename Slot>
-std::uint32_t free_slot(std::vector<Slot>& slots) {
-  for (std::uint32_t i = 0; i < slots.size(); ++i)
-    if (!slots[i].alive) return i;
-  slots.emplace_back();
-  return static_cast<std::uint32_t>(slots.size() - 1);
-}
-
 }  // namespace
 
 World::World(const WorldSettings& settings) : settings_(settings) {
@@ -32,83 +24,6 @@ World::World(const WorldSettings& settings) : settings_(settings) {
 }
 
 World::~World() { stop_threads(); }
-
-Handle World::create_mesh(const MeshInput& input, Status& status) {
-  auto data = std::make_unique<MeshData>();
-  data->mesh = Mesh::build(input, status);
-  if (!status) return {};
-  data->snch = std::make_unique<Snch>(data->mesh);
-  const std::uint32_t i = free_slot(meshes_);
-  MeshSlot& slot = meshes_[i];
-  slot.generation += 1;
-  slot.alive = true;
-  slot.data = std::move(data);
-  slot.users = 0;
-  return {i, slot.generation};
-}
-
-bool World::mesh_alive(Handle h) const {
-  return h.index < meshes_.size() && meshes_[h.index].alive && meshes_[h.index].generation == h.generation;
-}
-
-bool World::destroy_mesh(Handle h, Status& status) {
-  MeshSlot& slot = meshes_[h.index];
-  if (slot.users > 0) {
-    status = Status(StatusCode::InvalidArgument,
-                    "mesh is used by " + std::to_string(slot.users) + " bodies; destroy them first");
-    return false;
-  }
-  slot.alive = false;
-  slot.data.reset();
-  rigs_.erase(h.index);
-  return true;
-}
-
-Handle World::create_body(Handle mesh, BodyType type, const Pose& pose, const Vec3& reference_point,
-                          const ToolSettings& tool) {
-  const std::uint32_t i = free_slot(bodies_);
-  BodySlot& b = bodies_[i];
-  b.generation += 1;
-  b.alive = true;
-  b.mesh = mesh.index;
-  b.type = type;
-  b.pose = pose;
-  b.reference_point = reference_point;
-  b.pose_version += 1;
-  b.contacts.clear();
-  b.wrench = Wrench{};
-  b.device = Device{};
-  b.intersection_stats = PolylineStats{};
-  b.tool = type == BodyType::Tool ? tool : ToolSettings{};
-  b.device_pose = pose;
-  b.proxy = coupling::ProxyState{};
-  b.offset_rate.reset();
-  b.searched_pose = pose;
-  b.track_pending = false;
-  b.radius = 0.0;
-  const Aabb& box = meshes_[mesh.index].data->mesh.bounds();
-  for (int corner = 0; corner < 8; ++corner) {
-    const Vec3 p((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
-                 (corner & 4) ? box.max.z : box.min.z);
-    b.radius = std::max(b.radius, glm::length(p - reference_point));
-  }
-  meshes_[mesh.index].users += 1;
-  ++scene_version_;
-  return {i, b.generation};
-}
-
-bool World::body_alive(Handle h) const {
-  return h.index < bodies_.size() && bodies_[h.index].alive && bodies_[h.index].generation == h.generation;
-}
-
-void World::destroy_body(Handle h) {
-  BodySlot& b = bodies_[h.index];
-  b.alive = false;
-  b.contacts.clear();
-  b.device = Device{};
-  meshes_[b.mesh].users -= 1;
-  ++scene_version_;
-}
 
 void World::set_pose(Handle h, const Pose& pose) {
   BodySlot& b = bodies_[h.index];
@@ -178,6 +93,7 @@ StepStats World::stats() const { return running() ? threads_->step_stats() : sta
 bool World::start_threads(const ThreadSettings& settings, Status& status) {
   if (running()) return true;
   if (!Threads::check(settings, status)) return false;  // before any storage is reserved
+  view();  // the threads start from the scene's latest version
   auto threads = std::make_unique<Threads>(*this, settings);
   if (!threads->start(status)) return false;
   threads_ = std::move(threads);
@@ -239,29 +155,29 @@ void World::refresh_poses(Broadphase& bp) const {
   for (std::uint32_t t : bp.tools) bp.poses[t] = {bodies_[t].pose, bodies_[t].pose_version};
 }
 
-void World::update_broadphase(Broadphase& bp, std::uint64_t version) const {
+void World::update_broadphase(Broadphase& bp, std::uint64_t version, const SceneView& view) const {
   if (bp.scene_version == version) return;
   bp.scene_version = version;
   bp.tools.clear();
   std::vector<BodyTree::Item> items;
-  for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
-    const BodySlot& b = bodies_[i];
+  for (std::uint32_t i = 0; i < view.bodies.size(); ++i) {
+    const SceneBody& b = view.bodies[i];
     if (!b.alive) continue;
     if (b.type == BodyType::Tool) {
       bp.tools.push_back(i);
     } else {
-      items.push_back({world_box(meshes_[b.mesh].data->mesh.bounds(), bp.poses[i].pose, 0.0), i});
+      items.push_back({world_box(b.mesh->mesh.bounds(), bp.poses[i].pose, 0.0), i});
     }
   }
   bp.tree.build(std::move(items));
 }
 
-void World::search_tool(std::uint32_t t, Broadphase& bp, PairMap& pairs, std::vector<PairInRange>& in_range,
-                        StepStats& stats) const {
+void World::search_tool(std::uint32_t t, const SceneView& view, Broadphase& bp, PairMap& pairs,
+                        std::vector<PairInRange>& in_range, StepStats& stats) const {
   in_range.clear();
   const std::vector<BodyPose>& poses = bp.poses;
-  const BodySlot& tool = bodies_[t];
-  const MeshData& tool_mesh = *meshes_[tool.mesh].data;
+  const SceneBody& tool = view.bodies[t];
+  const MeshData& tool_mesh = *tool.mesh;
   const Pose& tool_pose = poses[t].pose;
   // Broadphase: only bodies whose boxes meet the tool's box grown by the
   // cutoff cost any narrow work; the tree finds the static and movable
@@ -271,13 +187,12 @@ void World::search_tool(std::uint32_t t, Broadphase& bp, PairMap& pairs, std::ve
   near.clear();
   bp.tree.query(tool_box, [&near](std::uint32_t id) { near.push_back(id); });
   for (std::uint32_t o : bp.tools)
-    if (o != t &&
-        boxes_overlap(tool_box, world_box(meshes_[bodies_[o].mesh].data->mesh.bounds(), poses[o].pose, 0.0)))
+    if (o != t && boxes_overlap(tool_box, world_box(view.bodies[o].mesh->mesh.bounds(), poses[o].pose, 0.0)))
       near.push_back(o);
   std::sort(near.begin(), near.end());  // results in body order, whatever the tree's
   for (std::uint32_t o : near) {
-    const BodySlot& other = bodies_[o];
-    const MeshData& other_mesh = *meshes_[other.mesh].data;
+    const SceneBody& other = view.bodies[o];
+    const MeshData& other_mesh = *other.mesh;
     ++stats.pairs_in_range;
     PairSlot& pair = pairs[pair_key(t, o)];
     if (pair.tool_generation != tool.generation || pair.body_generation != other.generation) {
@@ -372,12 +287,13 @@ void World::step() {
   for (std::uint32_t t = 0; t < bodies_.size(); ++t)
     if (bodies_[t].alive && constrained({t, bodies_[t].generation})) step_proxy(t, bodies_[t].proxy_stats);
   refresh_poses(broadphase_);
-  update_broadphase(broadphase_, scene_version_);
+  const SceneView& scene = *view();
+  update_broadphase(broadphase_, scene_version_, scene);
   std::vector<PairInRange> in_range;
   std::vector<LmdPair> all;
   for (std::uint32_t t : broadphase_.tools) {
     BodySlot& tool = bodies_[t];
-    search_tool(t, broadphase_, pairs_, in_range, stats_);
+    search_tool(t, scene, broadphase_, pairs_, in_range, stats_);
     if (tool.track_pending) {
       // The proxy moved without a new search: the pairs' LMDs follow it.
       const MeshData& tool_mesh = *meshes_[tool.mesh].data;

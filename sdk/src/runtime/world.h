@@ -9,9 +9,11 @@
 #include "runtime/body_tree.h"
 #include "runtime/device.h"
 #include "runtime/mesh_rig.h"
+#include "runtime/scene.h"
 #include "runtime/scripted_device.h"
 #include "runtime/stream_device.h"
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -22,8 +24,6 @@ namespace prox::runtime {
 
 class Threads;
 struct ThreadSettings;
-
-enum class BodyType { Static, Movable, Tool };
 
 // How a tool follows what moves it (docs/coupling.md): Free, the tool is
 // where the device puts it and the force comes from the LMDs (the paper);
@@ -124,13 +124,25 @@ class World {
  public:
   explicit World(const WorldSettings& settings);
 
-  // Meshes. create_mesh validates and builds; on error `status` says why.
+  // Meshes. create_mesh validates and builds, on the calling thread; on
+  // error `status` says why. Also while the threads run.
   Handle create_mesh(const MeshInput& input, Status& status);
   bool mesh_alive(Handle h) const;
   // Fails (false) while bodies use the mesh.
   bool destroy_mesh(Handle h, Status& status);
   const Mesh& mesh(Handle h) const { return meshes_[h.index].data->mesh; }
   const Snch& snch(Handle h) const { return *meshes_[h.index].data->snch; }
+  // Moves a mesh's vertices (x, y, z per welded vertex, in Mesh order; the
+  // same count), keeping its topology: a new shape of the mesh, its
+  // hierarchy refitted on the calling thread, or rebuilt when the refit has
+  // loosened it past Snch::kRebuildDegradation. Every body using the mesh
+  // takes the new shape: at the next step, or, while the threads run, at the
+  // tracking threads' next iteration. Fails (false, with `status`) on a
+  // count that differs or a non-finite coordinate, changing nothing.
+  bool set_vertices(Handle mesh, const double* positions, std::uint32_t count, Status& status);
+  bool set_vertices(Handle mesh, const std::vector<Vec3>& positions, Status& status);
+  // Whether a tool's body uses the mesh.
+  bool mesh_held_by_tool(Handle mesh) const;
 
   // glTF rigs (runtime/mesh_rig.h, docs/dynamic-scenes.md): the rig a mesh
   // was loaded with, whose input vertices must be the mesh's, and the game
@@ -217,8 +229,9 @@ class World {
   bool owns_device(const StreamDevice* device) const;
 
   // The threads (docs/threading.md). start_threads fails (false, with
-  // `status`) on bad settings; while they run, meshes and bodies can be
-  // neither created nor destroyed, and step() is refused.
+  // `status`) on bad settings; while they run, meshes and static and
+  // movable bodies may be created, destroyed and deformed (the C API
+  // refuses tools, and the meshes tools hold), and step() is refused.
   bool start_threads(const ThreadSettings& settings, Status& status);
   void stop_threads();
   bool running() const;
@@ -230,14 +243,21 @@ class World {
 
   // Brings a broadphase up to date with `poses` (one per body slot) at
   // scene version `version`: rebuilds its tree when the version moved.
-  void update_broadphase(Broadphase& bp, std::uint64_t version) const;
+  void update_broadphase(Broadphase& bp, std::uint64_t version, const SceneView& view) const;
   // One tool's search against the bodies in range at the broadphase's
   // poses, keeping per-pair state in `pairs`; `in_range` lists the pairs
   // kept, by body index. What step() and the global search thread both run.
-  // Reads only the meshes and bodies' static data: safe beside the game
-  // thread while the threads run (which freeze both).
-  void search_tool(std::uint32_t tool, Broadphase& bp, PairMap& pairs, std::vector<PairInRange>& in_range,
-                   StepStats& stats) const;
+  // Reads the scene through `view` alone: safe beside the game thread while
+  // the threads run.
+  void search_tool(std::uint32_t tool, const SceneView& view, Broadphase& bp, PairMap& pairs,
+                   std::vector<PairInRange>& in_range, StepStats& stats) const;
+
+  // The scene's latest version. Game thread.
+  const std::shared_ptr<const SceneView>& view();
+  // For the tracking threads while they run: replaces `view` with the
+  // latest version when it is not that one (true), taking the scene lock
+  // only then. A thread keeps its view alive as long as it uses it.
+  bool latest_view(std::shared_ptr<const SceneView>& view) const;
   // Drops the pairs no search has seen since the last call.
   static void prune(PairMap& pairs);
 
@@ -246,14 +266,10 @@ class World {
  private:
   friend class Threads;
 
-  struct MeshData {
-    Mesh mesh;
-    std::unique_ptr<Snch> snch;
-  };
   struct MeshSlot {
     std::uint32_t generation = 0;
     bool alive = false;
-    std::unique_ptr<MeshData> data;
+    std::shared_ptr<const MeshData> data;  // the mesh's current shape
     int users = 0;
   };
   struct BodySlot {
@@ -281,6 +297,12 @@ class World {
   };
 
   Aabb world_box(const Aabb& local, const Pose& pose, double margin) const;
+  // The radius of a mesh's bounds about a point of its frame.
+  static double radius_about(const Aabb& box, const Vec3& point);
+  // Marks the scene's shape changed: a new view is made when next asked
+  // for, and at once while the threads run (under scene_mutex_ then).
+  void shape_changed();
+  std::shared_ptr<SceneView> make_view() const;
   // Copies every body's pose into `bp` when the scene version moved, else
   // only the tools'.
   void refresh_poses(Broadphase& bp) const;
@@ -298,10 +320,17 @@ class World {
   // destroyed, static and movable bodies moved (tools move every step and
   // are tested on their own).
   std::uint64_t scene_version_ = 0;
+  std::uint64_t mesh_versions_ = 0;  // the last MeshData::version handed out
+  // The scene's shape as the tracking threads read it; remade when stale.
+  std::shared_ptr<const SceneView> view_;
+  bool view_stale_ = true;
+  std::uint64_t view_versions_ = 0;
+  std::atomic<std::uint64_t> view_version_{0};  // view_'s, for latest_view
   StepStats stats_;
   TrackStats track_stats_;
-  // While the threads run, the game thread's set_pose and the global
-  // search's reading of the poses meet here (never on the haptic path).
+  // While the threads run, the game thread's changes to the bodies, the
+  // meshes' slots and the view, and the tracking threads' reading of the
+  // poses and the view, meet here (never on the haptic path).
   mutable std::mutex scene_mutex_;
   std::vector<std::unique_ptr<ScriptedDevice>> scripted_devices_;
   std::vector<std::unique_ptr<StreamDevice>> stream_devices_;

@@ -79,6 +79,32 @@ bool vertex_is_open(const Mesh& mesh, std::uint32_t v) {
   return false;
 }
 
+// A refit's inner nodes, bottom-up from their children (children come after
+// their parent, so a reverse sweep meets both before the node).
+void refit_inner(std::vector<SnchNode>& nodes, std::vector<SnchBox>& boxes) {
+  for (std::size_t i = nodes.size(); i-- > 0;) {
+    SnchNode& node = nodes[i];
+    if (node.is_leaf()) continue;
+    const SnchNode &a = nodes[node.first], &b = nodes[node.second];
+    const SnchBox &ba = boxes[node.first], &bb = boxes[node.second];
+    boxes[i] = box_between(glm::min(ba.center - ba.half, bb.center - bb.half),
+                           glm::max(ba.center + ba.half, bb.center + bb.half));
+    // The smallest of three spheres that each hold both children: the
+    // merged one, and two about the box's centre (around the box, and
+    // around the children's spheres).
+    Sphere s = merge(Sphere{a.center, a.radius}, Sphere{b.center, b.radius});
+    const Vec3 centre = boxes[i].center;
+    const double around_box = glm::length(boxes[i].half);
+    const double around_children = std::max(glm::length(a.center - centre) + a.radius,
+                                            glm::length(b.center - centre) + b.radius);
+    const double r = std::min(around_box, around_children);
+    if (r < s.radius) s = {centre, r};
+    node.center = s.center;
+    node.radius = s.radius;
+    node.cone = merge(a.cone, b.cone);
+  }
+}
+
 }  // namespace
 
 Cone Snch::leaf_cone(const Mesh& mesh, std::uint32_t t, const std::vector<std::uint8_t>& open) {
@@ -129,8 +155,9 @@ Snch::Snch(const Mesh& mesh) {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> range(n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0);
   std::vector<Task> stack;
   // Each vertex's openness, once: every triangle around it asks.
-  std::vector<std::uint8_t> open(mesh.vertex_count());
-  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) open[v] = vertex_is_open(mesh, v);
+  open_.resize(mesh.vertex_count());
+  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) open_[v] = vertex_is_open(mesh, v);
+  const std::vector<std::uint8_t>& open = open_;
   if (n > 0) {
     nodes_.emplace_back();
     stack.push_back({0, 0, n, 0});
@@ -207,14 +234,28 @@ Snch::Snch(const Mesh& mesh) {
     node.cone_cos = std::cos(node.cone.half_angle);
     node.cone_sin = std::sin(node.cone.half_angle);
   }
+  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) two_sided_ = two_sided_ || open_[v];
+  compute_vertex_spread(mesh);
+  stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
+  stats_.memory_bytes = nodes_.capacity() * sizeof(SnchNode) + boxes_.capacity() * sizeof(SnchBox) +
+                        vertex_spread_.capacity() * sizeof(double) + open_.capacity();
+  // The ratio a refit of the unmoved mesh would measure, so that
+  // degradation starts at exactly 1.
+  {
+    Snch copy;
+    copy.nodes_ = nodes_;
+    copy.boxes_ = boxes_;
+    refit_inner(copy.nodes_, copy.boxes_);
+    built_ratio_ = copy.radius_ratio();
+  }
+  stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void Snch::compute_vertex_spread(const Mesh& mesh) {
   vertex_spread_.assign(mesh.vertex_count(), 0.5 * kPi);
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
     const Vec3& normal = mesh.vertex_normal(v);
-    if (open[v]) {
-      two_sided_ = true;
-      continue;
-    }
-    if (!(glm::dot(normal, normal) > 0.0)) continue;
+    if (open_[v] || !(glm::dot(normal, normal) > 0.0)) continue;
     double spread = 0.0;
     for (const std::uint32_t* t = mesh.vertex_triangles_begin(v); t != mesh.vertex_triangles_end(v); ++t) {
       const Vec3& f = mesh.face_normal(*t);
@@ -222,10 +263,67 @@ Snch::Snch(const Mesh& mesh) {
     }
     vertex_spread_[v] = std::min(spread, 0.5 * kPi);
   }
-  stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
-  stats_.memory_bytes = nodes_.capacity() * sizeof(SnchNode) + boxes_.capacity() * sizeof(SnchBox) +
-                        vertex_spread_.capacity() * sizeof(double);
-  stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double Snch::radius_ratio() const {
+  // Scale-free, and blind to the leaves, which are the triangles' own
+  // spheres whatever the tree: how much room the inner nodes take for the
+  // size of the whole.
+  if (nodes_.empty() || !(nodes_[0].radius > 0.0)) return 1.0;
+  double inner = 0.0;
+  for (const SnchNode& node : nodes_)
+    if (!node.is_leaf()) inner += node.radius;
+  return inner > 0.0 ? inner / nodes_[0].radius : 1.0;
+}
+
+void Snch::refit(const Mesh& mesh) {
+  const auto start = std::chrono::steady_clock::now();
+  // Each vertex's sum of the face normals around it: a leaf's cone axis is
+  // the sum over its three vertices, as leaf_cone() takes it.
+  std::vector<Vec3> ring_sum(mesh.vertex_count(), Vec3(0.0));
+  for (std::uint32_t t = 0; t < mesh.triangle_count(); ++t)
+    for (std::uint32_t v : mesh.indices(t)) ring_sum[v] += mesh.face_normal(t);
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    SnchNode& node = nodes_[i];
+    if (node.is_leaf()) {
+      const std::uint32_t t = node.first;
+      const Triangle tri = mesh.triangle(t);
+      const Sphere s = triangle_sphere(tri);
+      node.center = s.center;
+      node.radius = s.radius;
+      boxes_[i] = box_between(glm::min(glm::min(tri.v[0], tri.v[1]), tri.v[2]),
+                              glm::max(glm::max(tri.v[0], tri.v[1]), tri.v[2]));
+      // leaf_cone(), with one angle per leaf: the normal least aligned with
+      // the axis has the widest angle, up to rounding of the dot products
+      // (a few 1e-8 rad at worst, near a zero angle), which the margin covers.
+      const auto& idx = mesh.indices(t);
+      node.cone = Cone::everything();
+      if (open_[idx[0]] || open_[idx[1]] || open_[idx[2]]) continue;
+      const Vec3 sum = ring_sum[idx[0]] + ring_sum[idx[1]] + ring_sum[idx[2]];
+      const double len = glm::length(sum);
+      if (!(len > 1e-12)) continue;
+      const Vec3 axis = sum / len;
+      double least = 2.0;
+      Vec3 widest = axis;
+      for (std::uint32_t v : idx)
+        for (const std::uint32_t* n = mesh.vertex_triangles_begin(v); n != mesh.vertex_triangles_end(v); ++n) {
+          const Vec3& normal = mesh.face_normal(*n);
+          const double d = glm::dot(axis, normal);
+          if (d < least && glm::dot(normal, normal) > 0.0) least = d, widest = normal;
+        }
+      const double half = angle_between(axis, widest) + 3e-8;
+      if (half < 0.5 * kPi) node.cone = {axis, half};
+    }
+  }
+  refit_inner(nodes_, boxes_);
+  for (SnchNode& node : nodes_) {
+    node.cone_cos = std::cos(node.cone.half_angle);
+    node.cone_sin = std::sin(node.cone.half_angle);
+  }
+  compute_vertex_spread(mesh);
+  stats_.refits += 1;
+  stats_.degradation = radius_ratio() / built_ratio_;
+  stats_.refit_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace prox

@@ -42,6 +42,14 @@ struct SnchStats {
   std::uint32_t unbounded_leaves = 0;  // leaves whose cone holds every direction
   double build_seconds = 0.0;
   std::size_t memory_bytes = 0;
+  // Refits since the last build, and the last one's time.
+  std::uint32_t refits = 0;
+  double refit_seconds = 0.0;
+  // How far refitting has loosened the tree (docs/dynamic-scenes.md): the
+  // inner nodes' summed radii over the root's radius, now, over the same
+  // ratio when the tree was built. 1 after a build; a rebuild is due once it
+  // passes kRebuildDegradation.
+  double degradation = 1.0;
 };
 
 // Built once per mesh, top-down: each node's triangles are split at the median
@@ -50,6 +58,16 @@ struct SnchStats {
 class Snch {
  public:
   explicit Snch(const Mesh& mesh);
+
+  // Past this degradation (stats().degradation) a refitted tree is rebuilt.
+  static constexpr double kRebuildDegradation = 1.5;
+
+  // Refits the tree to `mesh`, the mesh it was built for with its vertices
+  // moved (same topology): every node's sphere, box and cone bottom-up from
+  // the triangles' new positions, keeping the tree's shape. Linear time; the
+  // bounds stay conservative, only looser than a fresh build's
+  // (stats().degradation says how much).
+  void refit(const Mesh& mesh);
 
   const std::vector<SnchNode>& nodes() const { return nodes_; }
   const SnchNode& root() const { return nodes_[0]; }
@@ -74,9 +92,20 @@ class Snch {
   static Cone leaf_cone(const Mesh& mesh, std::uint32_t t, const std::vector<std::uint8_t>& open);
 
  private:
+  Snch() = default;
+
   std::vector<SnchNode> nodes_;
   std::vector<SnchBox> boxes_;
   std::vector<double> vertex_spread_;
+  // By vertex: the surface around it is open or folded (topology alone, so
+  // a refit keeps it).
+  std::vector<std::uint8_t> open_;
+  // radius_ratio() of the built tree, its inner nodes as a refit fits them.
+  double built_ratio_ = 1.0;
+  // The inner nodes' summed radii over the root's, of the tree as it is.
+  double radius_ratio() const;
+  // Every vertex's spread (vertex_spread) from the mesh's normals.
+  void compute_vertex_spread(const Mesh& mesh);
   bool two_sided_ = false;
   SnchStats stats_;
 };

@@ -57,6 +57,18 @@ namespace Proxima
         }
 
         /// <summary>Fails while bodies use the mesh.</summary>
+        /// <summary>Deforms the mesh: x, y, z per vertex in the order GetTriangles hands them out, as
+        /// many vertices as the mesh has (Info.VertexCount). The bodies using it take the new shape;
+        /// also while the threads run, at frame rate (docs/dynamic-scenes.md). Game thread.</summary>
+        public void SetVertices(double[] positions)
+        {
+            if (positions == null) throw new ArgumentNullException(nameof(positions));
+            if (positions.Length % 3 != 0)
+                throw new ArgumentException("positions holds x, y, z per vertex: its length " + positions.Length +
+                                            " is not a multiple of 3", nameof(positions));
+            Native.Check(Native.proxMesh_SetVertices(id, positions, (uint)(positions.Length / 3)));
+        }
+
         public void Destroy() => Native.Check(Native.proxMesh_Destroy(id));
 
         public bool Equals(Mesh o) =>

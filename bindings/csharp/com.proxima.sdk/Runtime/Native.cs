@@ -163,6 +163,8 @@ namespace Proxima
         internal static extern Result proxMesh_GetTriangles(MeshId mesh, double[] positions, uint vertexCapacity,
                                                             out uint vertexCount, uint[] indices,
                                                             uint triangleCapacity, out uint triangleCount);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxMesh_SetVertices(MeshId mesh, double[] positions, uint vertexCount);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern BodyDef proxDefaultBodyDef();
