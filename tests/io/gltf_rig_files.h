@@ -33,6 +33,7 @@ struct SkinnedTriangle {
   WeightType weight_type = WeightType::Float;
   bool second_joints_set = false;  // a JOINTS_1 (the JOINTS_0 accessor again) without WEIGHTS_1
   int joint_count = 2;             // the skin's joints (nodes 1 and 2)
+  bool bare_primitive = false;     // a second primitive, its own POSITION accessor, no JOINTS_0
 
   // The .gltf text. Node 0 holds the mesh and skin; joint 0 is node 1 at the
   // origin, joint 1 is node 2, its child, at x = 1; inverse bind matrices are
@@ -81,10 +82,12 @@ struct SkinnedTriangle {
            "{\"bufferView\":1,\"count\":3,\"componentType\":5121,\"type\":\"VEC4\"},"
            "{\"bufferView\":2,\"count\":3,\"componentType\":" +
            type + normalized + ",\"type\":\"VEC4\"},{\"bufferView\":3,\"count\":" + std::to_string(joint_count) +
-           ",\"componentType\":5126,\"type\":\"MAT4\"}],\"meshes\":[{\"primitives\":[{\"attributes\":"
+           ",\"componentType\":5126,\"type\":\"MAT4\"}" +
+           (bare_primitive ? ",{\"bufferView\":0,\"count\":3,\"componentType\":5126,\"type\":\"VEC3\"}" : "") +
+           "],\"meshes\":[{\"primitives\":[{\"attributes\":"
            "{\"POSITION\":0,\"JOINTS_0\":1,\"WEIGHTS_0\":2" +
-           (second_joints_set ? ",\"JOINTS_1\":1" : "") +
-           "}}]}],\"skins\":[{\"joints\":[" + joints_list +
+           (second_joints_set ? ",\"JOINTS_1\":1" : "") + "}}" +
+           (bare_primitive ? ",{\"attributes\":{\"POSITION\":4}}" : "") + "]}],\"skins\":[{\"joints\":[" + joints_list +
            "],\"inverseBindMatrices\":3}],\"nodes\":[{\"mesh\":0,\"skin\":0},{\"children\":[2]},"
            "{\"translation\":[1,0,0]}],\"scene\":0,\"scenes\":[{\"nodes\":[0,1]}]}";
   }

@@ -299,6 +299,14 @@ TEST(GltfRigRules, AsManyJointsAsWeightsSets) {
   EXPECT_TRUE(contains(message, "mesh 0 primitive 0 has 2 JOINTS_n and 1 WEIGHTS_n")) << message;
 }
 
+// A skinned node's every primitive has joints and weights.
+TEST(GltfRigRules, EverySkinnedPrimitiveHasJoints) {
+  gltf_rig_files::SkinnedTriangle t;
+  t.bare_primitive = true;
+  const std::string message = refused(t);
+  EXPECT_TRUE(contains(message, "node 0 has skin 0 but mesh 0 primitive 1 has no JOINTS_0 and WEIGHTS_0")) << message;
+}
+
 // A SHOULD: float weights off 1 are normalized, with a warning naming the
 // accessor and the worst vertex.
 TEST(GltfRigRules, FloatWeightsOffOneAreNormalizedWithAWarning) {

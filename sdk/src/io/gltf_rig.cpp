@@ -164,6 +164,7 @@ class RigReader {
         if (!p.attributes.count("JOINTS_" + std::to_string(s)) || !p.attributes.count("WEIGHTS_" + std::to_string(s)))
           return error(where + " has no JOINTS_" + std::to_string(s) + " or WEIGHTS_" + std::to_string(s) +
                        " but " + std::to_string(joints) + " JOINTS_n (they are numbered from 0)");
+      if (joints == 0 && lacking_joints_.count(index) == 0) lacking_joints_[index] = local.primitives[k].primitive;
       sets = std::max(sets, joints);
     }
     const std::size_t n = out.positions.size();
@@ -297,10 +298,11 @@ class RigReader {
   Status check_joints(const MeshInstance& in, std::size_t joint_count, const rig::RigMesh& mesh) const {
     const tinygltf::Mesh& source = model_.meshes[static_cast<std::size_t>(in.mesh)];
     const std::string who = named("node", static_cast<std::size_t>(in.node), model_.nodes[static_cast<std::size_t>(in.node)].name);
-    if (mesh.influences == 0)
+    const auto lacking = lacking_joints_.find(in.mesh);
+    if (lacking != lacking_joints_.end())
       return error(who + " has skin " + std::to_string(model_.nodes[static_cast<std::size_t>(in.node)].skin) +
-                   " but " + named("mesh", static_cast<std::size_t>(in.mesh), source.name) +
-                   " has no JOINTS_0 and WEIGHTS_0");
+                   " but " + named("mesh", static_cast<std::size_t>(in.mesh), source.name) + " primitive " +
+                   std::to_string(lacking->second) + " has no JOINTS_0 and WEIGHTS_0");
     for (std::size_t v = 0; v < mesh.positions.size(); ++v)
       for (std::size_t k = 0; k < mesh.influences; ++k) {
         const std::uint32_t j = mesh.joints[v * mesh.influences + k];
@@ -450,6 +452,7 @@ class RigReader {
   const std::string& name_;
   std::vector<std::string>* warnings_;
   AccessorReader reader_;
+  std::map<int, int> lacking_joints_;  // mesh -> its first triangle primitive without JOINTS_0
 };
 
 }  // namespace
