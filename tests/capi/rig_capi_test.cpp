@@ -225,6 +225,30 @@ TEST(RigCapi, MisuseIsRefusedByName) {
   EXPECT_OK(proxMesh_SetMorphWeights(skin, nullptr, 0));  // no morph targets: count 0, nothing to read
 }
 
+// While the threads run: a static body's mesh is posed (its vertices
+// replaced, as proxMesh_SetVertices allows), a tool's is refused.
+TEST(RigCapi, PosingWhileTheThreadsRun) {
+  Fixture f;
+  const proxMeshId wall = f.load("gltf/RiggedSimple.glb");
+  const proxMeshId held = f.load("gltf/RiggedSimple.glb");
+  proxBodyDef def = proxDefaultBodyDef();
+  def.mesh = wall;
+  proxBodyId a{}, b{};
+  ASSERT_OK(proxWorld_CreateBody(f.world, &def, &a));
+  def.mesh = held;
+  def.type = PROX_BODY_TOOL;
+  def.pose.position = proxVec3{0, 0, 10};
+  ASSERT_OK(proxWorld_CreateBody(f.world, &def, &b));
+  const MeshData before = triangles_of(wall);
+  const proxThreadsDef threads = proxDefaultThreadsDef();
+  ASSERT_OK(proxWorld_StartThreads(f.world, &threads));
+  EXPECT_OK(proxMesh_Animate(wall, 0, 1.5));
+  EXPECT_FAILS(proxMesh_Animate(held, 0, 1.5), PROX_ERROR_BUSY, "a tool holds the mesh");
+  EXPECT_OK(proxWorld_StopThreads(f.world));
+  EXPECT_NE(triangles_of(wall).positions, before.positions);
+  EXPECT_OK(proxMesh_Animate(held, 0, 1.5));
+}
+
 // A character's neck with weights summing to 0.18: loaded, normalized, and
 // said so in proxMesh_GetWarnings.
 TEST(RigCapi, FloatWeightsOffOneWarn) {

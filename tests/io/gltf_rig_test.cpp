@@ -50,6 +50,23 @@ TEST(GltfRig, EveryRiggedSampleLoadsWithItsRig) {
   }
 }
 
+// Per node, each instance's vertices are posed at rest too (no rig is kept):
+// one after the other they are the merged soup's.
+TEST(GltfRig, PerNodeIsPosedAtRestToo) {
+  for (const RiggedAsset& a : kRigged) {
+    SCOPED_TRACE(a.file);
+    const std::vector<GltfMesh> merged = load_asset(a.file);
+    const std::vector<GltfMesh> per_node = load_asset(a.file, GltfSceneMode::PerNode);
+    ASSERT_EQ(merged.size(), 1u);
+    std::vector<double> joined;
+    for (const GltfMesh& m : per_node) {
+      EXPECT_EQ(m.rig, nullptr);
+      joined.insert(joined.end(), m.positions.begin(), m.positions.end());
+    }
+    EXPECT_EQ(joined, merged[0].positions);
+  }
+}
+
 // A file without skins, morph targets or animations has no rig.
 TEST(GltfRig, StaticFilesHaveNoRig) {
   for (const char* file : {"gltf/Box.glb", "gltf/Duck.glb", "gltf/OrientationTest.glb"}) {
