@@ -3,8 +3,10 @@
 // rules on skins, checked by the reader and through the C API.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -90,6 +92,47 @@ struct SkinnedTriangle {
            (bare_primitive ? ",{\"attributes\":{\"POSITION\":4}}" : "") + "]}],\"skins\":[{\"joints\":[" + joints_list +
            "],\"inverseBindMatrices\":3}],\"nodes\":[{\"mesh\":0,\"skin\":0},{\"children\":[2]},"
            "{\"translation\":[1,0,0]}],\"scene\":0,\"scenes\":[{\"nodes\":[0,1]}]}";
+  }
+};
+
+// The unit right triangle in z = 0, one morph target lifting vertex 2 by 1
+// in z, and one animation channel of node 0 with keyframes at `times`
+// (values 0 and 1 for weights; (0,0,0) and (1,0,0) for translation).
+struct MorphedTriangle {
+  float times[2] = {0, 2};
+  std::string path = "weights";
+  bool node_matrix = false;  // node 0 has an identity matrix
+
+  std::string json() const {
+    std::vector<unsigned char> bin;
+    const auto put = [&bin](std::initializer_list<float> values) {
+      for (const float f : values) {
+        unsigned char b[4];
+        std::memcpy(b, &f, 4);
+        bin.insert(bin.end(), b, b + 4);
+      }
+    };
+    put({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, times[0], times[1]});
+    const bool weights = path == "weights";
+    if (weights)
+      put({0, 1});
+    else
+      put({0, 0, 0, 1, 0, 0});
+    return "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[0]}],\"nodes\":[{\"mesh\":0" +
+           std::string(node_matrix ? ",\"matrix\":[1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1]" : "") +
+           "}],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"targets\":[{\"POSITION\":1}]}]}],"
+           "\"animations\":[{\"channels\":[{\"sampler\":0,\"target\":{\"node\":0,\"path\":\"" +
+           path + "\"}}],\"samplers\":[{\"input\":2,\"output\":3}]}],\"buffers\":[{\"byteLength\":" +
+           std::to_string(bin.size()) + ",\"uri\":\"data:application/octet-stream;base64," + base64(bin) +
+           "\"}],\"bufferViews\":[{\"buffer\":0,\"byteLength\":36},{\"buffer\":0,\"byteOffset\":36,"
+           "\"byteLength\":36},{\"buffer\":0,\"byteOffset\":72,\"byteLength\":8},{\"buffer\":0,"
+           "\"byteOffset\":80,\"byteLength\":" +
+           std::to_string(bin.size() - 80) +
+           "}],\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"},"
+           "{\"bufferView\":1,\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"},"
+           "{\"bufferView\":2,\"componentType\":5126,\"count\":2,\"type\":\"SCALAR\"},"
+           "{\"bufferView\":3,\"componentType\":5126,\"count\":2,\"type\":\"" +
+           (weights ? "SCALAR" : "VEC3") + "\"}]}";
   }
 };
 

@@ -324,6 +324,39 @@ TEST(GltfRigRules, EverySkinnedPrimitiveHasJoints) {
   EXPECT_TRUE(contains(message, "node 0 has skin 0 but mesh 0 primitive 1 has no JOINTS_0 and WEIGHTS_0")) << message;
 }
 
+// Animations: keyframe times strictly increasing; an animated node has
+// translation, rotation and scale, not a matrix.
+TEST(GltfRigRules, AnimationsFollowTheRules) {
+  gltf_rig_files::MorphedTriangle t;
+  std::vector<GltfMesh> out;
+  Status status = load_memory(t.json(), out, nullptr);
+  ASSERT_TRUE(status.is_ok()) << status.message();
+  ASSERT_NE(out[0].rig, nullptr);
+  rig::Pose pose = out[0].rig->rest_pose();
+  out[0].rig->animate(0, 1.5, pose);
+  EXPECT_EQ(pose.weights[0], std::vector<double>{0.75});
+
+  t.times[1] = 0;
+  status = load_memory(t.json(), out, nullptr);
+  EXPECT_EQ(status.code(), StatusCode::ParseError);
+  EXPECT_TRUE(contains(status.message(), "animation 0 sampler 0: input accessor 2: keyframe 1 at 0 s (glTF: times "
+                                         "are finite, not negative and strictly increasing)"))
+      << status.message();
+
+  t = gltf_rig_files::MorphedTriangle();
+  t.path = "translation";
+  t.node_matrix = true;
+  status = load_memory(t.json(), out, nullptr);
+  EXPECT_EQ(status.code(), StatusCode::ParseError);
+  EXPECT_TRUE(contains(status.message(), "animation 0 channel 0: node 0 has a matrix")) << status.message();
+  t.node_matrix = false;
+  status = load_memory(t.json(), out, nullptr);
+  ASSERT_TRUE(status.is_ok()) << status.message();
+  pose = out[0].rig->rest_pose();
+  out[0].rig->animate(0, 0.5, pose);
+  EXPECT_EQ(pose.local[0].translation, Vec3(0.25, 0, 0));
+}
+
 // A SHOULD: float weights off 1 are normalized, with a warning naming the
 // accessor and the worst vertex.
 TEST(GltfRigRules, FloatWeightsOffOneAreNormalizedWithAWarning) {

@@ -168,6 +168,14 @@ class RigReader {
       sets = std::max(sets, joints);
     }
     const std::size_t n = out.positions.size();
+    // A few morph targets' accessors can be named by thousands of targets:
+    // bound what they unfold to (2^26 deltas, 1.5 GiB).
+    constexpr std::uint64_t kMaxDeltas = std::uint64_t{1} << 26;
+    if (targets > 0 && std::uint64_t{n} * targets > kMaxDeltas)
+      return {StatusCode::Unsupported, name_ + ": " + named("mesh", static_cast<std::size_t>(index), mesh.name) +
+                                           ": " + std::to_string(targets) + " morph targets of " +
+                                           std::to_string(n) + " vertices are more than the " +
+                                           std::to_string(kMaxDeltas) + " deltas Proxima reads"};
     out.targets.assign(targets, std::vector<Vec3>(n, Vec3(0.0)));
     out.influences = static_cast<std::uint32_t>(4 * sets);
     out.joints.assign(n * out.influences, 0);
@@ -376,6 +384,7 @@ class RigReader {
     const std::string where = named("animation", index, animation.name);
     out.name = animation.name.empty() ? "animation " + std::to_string(index) : animation.name;
     bool first = true;
+    std::map<int, std::uint32_t> sampler_of;  // glTF sampler -> out.samplers
     for (std::size_t c = 0; c < animation.channels.size(); ++c) {
       const tinygltf::AnimationChannel& channel = animation.channels[c];
       const std::string at = where + " channel " + std::to_string(c);
@@ -407,40 +416,64 @@ class RigReader {
                      " has a matrix (glTF: an animated node has translation, rotation and scale)");
       if (channel.sampler < 0 || static_cast<std::size_t>(channel.sampler) >= animation.samplers.size())
         return error(at + ": sampler " + std::to_string(channel.sampler) + " does not exist");
-      const tinygltf::AnimationSampler& sampler = animation.samplers[static_cast<std::size_t>(channel.sampler)];
-      const std::string sat = where + " sampler " + std::to_string(channel.sampler);
-      rig::Sampler& s = ch.sampler;
-      if (sampler.interpolation == "LINEAR" || sampler.interpolation.empty())
-        s.interpolation = Interpolation::Linear;
-      else if (sampler.interpolation == "STEP")
-        s.interpolation = Interpolation::Step;
-      else if (sampler.interpolation == "CUBICSPLINE")
-        s.interpolation = Interpolation::CubicSpline;
-      else
-        return error(sat + ": unknown interpolation '" + sampler.interpolation + "'");
-      Status status = reader_.read(sampler.input, sat + ": input", AccessorUse::Time, s.times);
-      if (status) status = reader_.read(sampler.output, sat + ": output", use, s.values);
-      if (!status) return status;
-      const std::string input = sat + ": input accessor " + std::to_string(sampler.input);
-      if (s.times.empty()) return error(input + " has no keyframes");
-      for (std::size_t k = 0; k < s.times.size(); ++k)
-        if (!std::isfinite(s.times[k]) || s.times[k] < 0.0 || (k > 0 && !(s.times[k] > s.times[k - 1])))
-          return error(input + ": keyframe " + std::to_string(k) + " at " + number(s.times[k]) +
-                       " s (glTF: times are finite, not negative and strictly increasing)");
-      s.width = ch.path == Path::Rotation ? 4 : ch.path == Path::Weights ? static_cast<std::uint32_t>(node.weights.size()) : 3;
-      const std::size_t groups = s.interpolation == Interpolation::CubicSpline ? 3 : 1;
-      const std::size_t want = s.times.size() * groups * s.width;
-      if (s.values.size() != want)
-        return error(sat + ": output accessor " + std::to_string(sampler.output) + " has " +
-                     std::to_string(s.values.size()) + " values; " + std::to_string(s.times.size()) +
-                     " keyframes of " + channel.target_path + " need " + std::to_string(want));
-      if (!all_finite(s.values))
-        return error(sat + ": output accessor " + std::to_string(sampler.output) + ": a non-finite value");
+      // Channels may share a sampler: it is read once, for the first, and
+      // must fit every other (the same width).
+      const std::uint32_t width = ch.path == Path::Rotation  ? 4
+                                  : ch.path == Path::Weights ? static_cast<std::uint32_t>(node.weights.size())
+                                                             : 3;
+      const auto [known, fresh] =
+          sampler_of.emplace(channel.sampler, static_cast<std::uint32_t>(out.samplers.size()));
+      ch.sampler = known->second;
+      if (fresh) {
+        out.samplers.emplace_back();
+        const Status status = read_sampler(animation, where, channel.sampler, use, width, channel.target_path,
+                                           out.samplers.back());
+        if (!status) return status;
+      } else if (out.samplers[known->second].width != width) {
+        return error(at + ": sampler " + std::to_string(channel.sampler) + " gives " +
+                     std::to_string(out.samplers[known->second].width) + " values per keyframe to an earlier "
+                     "channel but " + channel.target_path + " here needs " + std::to_string(width));
+      }
+      const rig::Sampler& s = out.samplers[known->second];
       out.start = first ? s.times.front() : std::min(out.start, s.times.front());
       out.end = first ? s.times.back() : std::max(out.end, s.times.back());
       first = false;
       out.channels.push_back(std::move(ch));
     }
+    return Status::ok();
+  }
+
+  // Sampler `index` of `animation`, `width` values per keyframe (its output read for `use`).
+  Status read_sampler(const tinygltf::Animation& animation, const std::string& where, int index, AccessorUse use,
+                      std::uint32_t width, const std::string& path, rig::Sampler& s) const {
+    const tinygltf::AnimationSampler& sampler = animation.samplers[static_cast<std::size_t>(index)];
+    const std::string sat = where + " sampler " + std::to_string(index);
+    if (sampler.interpolation == "LINEAR" || sampler.interpolation.empty())
+      s.interpolation = Interpolation::Linear;
+    else if (sampler.interpolation == "STEP")
+      s.interpolation = Interpolation::Step;
+    else if (sampler.interpolation == "CUBICSPLINE")
+      s.interpolation = Interpolation::CubicSpline;
+    else
+      return error(sat + ": unknown interpolation '" + sampler.interpolation + "'");
+    Status status = reader_.read(sampler.input, sat + ": input", AccessorUse::Time, s.times);
+    if (status) status = reader_.read(sampler.output, sat + ": output", use, s.values);
+    if (!status) return status;
+    const std::string input = sat + ": input accessor " + std::to_string(sampler.input);
+    if (s.times.empty()) return error(input + " has no keyframes");
+    for (std::size_t k = 0; k < s.times.size(); ++k)
+      if (!std::isfinite(s.times[k]) || s.times[k] < 0.0 || (k > 0 && !(s.times[k] > s.times[k - 1])))
+        return error(input + ": keyframe " + std::to_string(k) + " at " + number(s.times[k]) +
+                     " s (glTF: times are finite, not negative and strictly increasing)");
+    s.width = width;
+    const std::size_t groups = s.interpolation == Interpolation::CubicSpline ? 3 : 1;
+    const std::size_t want = s.times.size() * groups * width;
+    if (s.values.size() != want)
+      return error(sat + ": output accessor " + std::to_string(sampler.output) + " has " +
+                   std::to_string(s.values.size()) + " values; " + std::to_string(s.times.size()) +
+                   " keyframes of " + path + " need " + std::to_string(want));
+    if (!all_finite(s.values))
+      return error(sat + ": output accessor " + std::to_string(sampler.output) + ": a non-finite value");
     return Status::ok();
   }
 

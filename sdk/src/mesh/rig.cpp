@@ -194,16 +194,19 @@ bool Rig::finalize(Status& status) {
   for (std::size_t a = 0; a < animations.size(); ++a)
     for (std::size_t c = 0; c < animations[a].channels.size(); ++c) {
       const Channel& ch = animations[a].channels[c];
-      const Sampler& s = ch.sampler;
-      const std::size_t width = ch.path == Path::Rotation ? 4
-                                : ch.path == Path::Weights && ch.node < node_count
-                                    ? nodes[ch.node].weights.size()
-                                    : 3;
+      const std::string what = "animation " + std::to_string(a) + " channel " + std::to_string(c);
+      if (ch.node >= node_count || ch.sampler >= animations[a].samplers.size()) {
+        status = invalid(what + " refers to a node or sampler that does not exist");
+        return false;
+      }
+      const Sampler& s = animations[a].samplers[ch.sampler];
+      const std::size_t width = ch.path == Path::Rotation  ? 4
+                                : ch.path == Path::Weights ? nodes[ch.node].weights.size()
+                                                           : 3;
       const std::size_t groups = s.interpolation == Interpolation::CubicSpline ? 3 : 1;
-      if (ch.node >= node_count || s.width != width || s.times.empty() ||
-          s.values.size() != s.times.size() * groups * width || (ch.path != Path::Weights && nodes[ch.node].has_matrix)) {
-        status = invalid("animation " + std::to_string(a) + " channel " + std::to_string(c) +
-                         " does not fit its node or its sampler's sizes");
+      if (s.width != width || s.times.empty() || s.values.size() != s.times.size() * groups * width ||
+          (ch.path != Path::Weights && nodes[ch.node].has_matrix)) {
+        status = invalid(what + " does not fit its node or its sampler's sizes");
         return false;
       }
     }
@@ -226,23 +229,24 @@ void Rig::animate(std::size_t a, double seconds, Pose& pose) const {
   double value[4];
   std::vector<double> weights;
   for (const Channel& ch : animations[a].channels) {
+    const Sampler& sampler = animations[a].samplers[ch.sampler];
     Trs& trs = pose.local[ch.node];
     switch (ch.path) {
       case Path::Translation:
-        sample(ch.sampler, seconds, false, value);
+        sample(sampler, seconds, false, value);
         trs.translation = Vec3(value[0], value[1], value[2]);
         break;
       case Path::Rotation:
-        sample(ch.sampler, seconds, true, value);
+        sample(sampler, seconds, true, value);
         trs.rotation = Quat(value[0], value[1], value[2], value[3]);
         break;
       case Path::Scale:
-        sample(ch.sampler, seconds, false, value);
+        sample(sampler, seconds, false, value);
         trs.scale = Vec3(value[0], value[1], value[2]);
         break;
       case Path::Weights:
-        weights.resize(ch.sampler.width);
-        sample(ch.sampler, seconds, false, weights.data());
+        weights.resize(sampler.width);
+        sample(sampler, seconds, false, weights.data());
         pose.weights[ch.node] = weights;
         break;
     }

@@ -87,11 +87,12 @@ struct Sampler {
 struct Channel {
   std::uint32_t node = 0;
   Path path = Path::Translation;
-  Sampler sampler;
+  std::uint32_t sampler = 0;  // in the animation's samplers (channels may share one)
 };
 
 struct Animation {
   std::string name;
+  std::vector<Sampler> samplers;
   std::vector<Channel> channels;
   double start = 0.0, end = 0.0;  // the first and last keyframe times over the channels
 };
