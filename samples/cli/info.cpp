@@ -46,8 +46,8 @@ int info(Args& args) {
   for (int32_t a = 0; a < rig.animationCount; ++a) {
     proxAnimationInfo anim;
     check(proxMesh_GetAnimationInfo(scene.mesh_a(), a, &anim));
-    std::printf("    animation %-6d %.6g s (keyframes from %.6g s), %d channels '%s'\n", a, anim.duration, anim.start,
-                anim.channelCount, anim.name);
+    std::printf("    animation %-6d %.6g s (keyframes from %.6g s), %d channels '%s'\n", a, anim.duration,
+                anim.start, anim.channelCount, anim.name);
   }
   // What loading skipped without failing (invalid attributes Proxima does
   // not read): one line each; the mesh is loaded all the same.

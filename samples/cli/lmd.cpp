@@ -8,10 +8,12 @@ namespace {
 AnimateAt parse_animate(const std::string& s, const char* option) {
   const std::size_t colon = s.find(':');
   if (colon == std::string::npos)
-    fail(std::string(option) + ": '" + s + "' is not INDEX:SECONDS (an animation index and a time, e.g. 0:1.5)");
+    fail(std::string(option) + ": '" + s +
+         "' is not INDEX:SECONDS (an animation index and a time, e.g. 0:1.5)");
   const double index = parse_number(s.substr(0, colon), option);
   if (index < 0 || index > 2147483647.0 || index != std::floor(index))
-    fail(std::string(option) + ": the animation index '" + s.substr(0, colon) + "' is not a whole number >= 0");
+    fail(std::string(option) + ": the animation index '" + s.substr(0, colon) +
+         "' is not a whole number >= 0");
   return {static_cast<int32_t>(index), parse_number(s.substr(colon + 1), option)};
 }
 

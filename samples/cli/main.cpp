@@ -12,8 +12,8 @@
 // are in the meshes' units (metres for the shared assets). docs/cli.md has
 // the details and the JSON layout.
 //
-//   proxima run [A B] [--device scripted|stream|hid[:VVVV:PPPP]] [--poses FILE] [--seconds S] [--trace FILE.csv] ...
-//   proxima devices [--json FILE]
+//   proxima run [A B] [--device scripted|stream|hid[:VVVV:PPPP]] [--poses FILE] [--seconds S] [--trace
+//   FILE.csv] ... proxima devices [--json FILE]
 //
 // A customer of the SDK like any other: it sees only the C API
 // (<proxima/proxima.h>, libproxima.so) and the samples' own utilities.

@@ -20,7 +20,9 @@
 
 namespace {
 
-std::string asset(const std::string& relative) { return std::string(PROX_SHARED_ASSETS_DIR) + "/" + relative; }
+std::string asset(const std::string& relative) {
+  return std::string(PROX_SHARED_ASSETS_DIR) + "/" + relative;
+}
 
 struct Fixture {
   proxWorldId world{};
@@ -36,7 +38,8 @@ struct Fixture {
   }
   proxMeshId load_memory(const std::string& text) {
     proxMeshId mesh{};
-    EXPECT_EQ(proxWorld_LoadMeshFromMemory(world, text.data(), text.size(), "skinned.gltf", &mesh), PROX_SUCCESS)
+    EXPECT_EQ(proxWorld_LoadMeshFromMemory(world, text.data(), text.size(), "skinned.gltf", &mesh),
+              PROX_SUCCESS)
         << proxGetLastError();
     return mesh;
   }
@@ -84,14 +87,16 @@ double worst_gap(const MeshData& mesh, const std::vector<std::array<double, 9>>&
     if (3 * t >= mesh.indices.size()) return std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < 3; ++k)
       for (std::size_t c = 0; c < 3; ++c)
-        worst = std::max(worst, std::abs(mesh.positions[3 * mesh.indices[3 * t + k] + c] - reference[r][3 * k + c]));
+        worst = std::max(worst,
+                         std::abs(mesh.positions[3 * mesh.indices[3 * t + k] + c] - reference[r][3 * k + c]));
     ++t;
   }
   return 3 * t == mesh.indices.size() ? worst : std::numeric_limits<double>::infinity();
 }
 
-const char* const kRigged[] = {"gltf/SimpleSkin.gltf",      "gltf/RiggedSimple.glb",       "gltf/RiggedFigure.glb",
-                               "gltf/RecursiveSkeletons.glb", "gltf/SimpleMorph.gltf",       "gltf/AnimatedMorphCube.glb",
+const char* const kRigged[] = {"gltf/SimpleSkin.gltf",         "gltf/RiggedSimple.glb",
+                               "gltf/RiggedFigure.glb",        "gltf/RecursiveSkeletons.glb",
+                               "gltf/SimpleMorph.gltf",        "gltf/AnimatedMorphCube.glb",
                                "gltf/MorphPrimitivesTest.glb", "gltf/InterpolationTest.glb"};
 
 TEST(RigCapi, AnimatedMeshesEqualAnIndependentEvaluation) {
@@ -110,7 +115,8 @@ TEST(RigCapi, AnimatedMeshesEqualAnIndependentEvaluation) {
 
     int32_t count = -1;
     ASSERT_OK(proxMesh_GetAnimationCount(mesh, &count));
-    const auto& animations = doc.json.contains("animations") ? doc.json["animations"] : nlohmann::json::array();
+    const auto& animations =
+        doc.json.contains("animations") ? doc.json["animations"] : nlohmann::json::array();
     ASSERT_EQ(count, static_cast<int32_t>(animations.size()));
     for (int32_t a = 0; a < count; ++a) {
       proxAnimationInfo info{};
@@ -170,15 +176,19 @@ TEST(RigCapi, JointMatricesFromTheEngine) {
     for (int c = 0; c < 3; ++c) EXPECT_DOUBLE_EQ(d.positions[3 * d.indices[k] + c], want[k][c]);
 
   // Refused by name, the mesh unchanged.
-  EXPECT_FAILS(proxMesh_SetJointMatrices(mesh, 0, m, 3), PROX_ERROR_INVALID_ARGUMENT, "count is 3 but skin 0 has 2");
-  EXPECT_FAILS(proxMesh_SetJointMatrices(mesh, 1, m, 2), PROX_ERROR_INVALID_ARGUMENT, "skin 1 does not exist");
-  EXPECT_FAILS(proxMesh_SetJointMatrices(mesh, 0, nullptr, 2), PROX_ERROR_INVALID_ARGUMENT, "matrices is NULL");
+  EXPECT_FAILS(proxMesh_SetJointMatrices(mesh, 0, m, 3), PROX_ERROR_INVALID_ARGUMENT,
+               "count is 3 but skin 0 has 2");
+  EXPECT_FAILS(proxMesh_SetJointMatrices(mesh, 1, m, 2), PROX_ERROR_INVALID_ARGUMENT,
+               "skin 1 does not exist");
+  EXPECT_FAILS(proxMesh_SetJointMatrices(mesh, 0, nullptr, 2), PROX_ERROR_INVALID_ARGUMENT,
+               "matrices is NULL");
   m[16 + 13] = std::nan("");
   EXPECT_FAILS(proxMesh_SetJointMatrices(mesh, 0, m, 2), PROX_ERROR_INVALID_ARGUMENT,
                "matrices[1] (joint 1) element 13 (column 3, row 1) is nan");
   m[16 + 13] = 2;
   m[16 + 3] = 0.5;
-  EXPECT_FAILS(proxMesh_SetJointMatrices(mesh, 0, m, 2), PROX_ERROR_INVALID_ARGUMENT, "matrices[1] (joint 1) is not affine");
+  EXPECT_FAILS(proxMesh_SetJointMatrices(mesh, 0, m, 2), PROX_ERROR_INVALID_ARGUMENT,
+               "matrices[1] (joint 1) is not affine");
   m[16 + 12] = 1e60;
   m[16 + 3] = 0;
   EXPECT_FAILS(proxMesh_SetJointMatrices(mesh, 0, m, 2), PROX_ERROR_INVALID_ARGUMENT, "beyond the +-1e50");
@@ -213,7 +223,8 @@ TEST(RigCapi, MisuseIsRefusedByName) {
   ASSERT_OK(proxMesh_GetAnimationCount(box, &count));
   EXPECT_EQ(count, 0);
   const proxMeshId skin = f.load("gltf/SimpleSkin.gltf");
-  EXPECT_FAILS(proxMesh_Animate(skin, 1, 0.0), PROX_ERROR_INVALID_ARGUMENT, "animation 1 does not exist (the mesh has 1)");
+  EXPECT_FAILS(proxMesh_Animate(skin, 1, 0.0), PROX_ERROR_INVALID_ARGUMENT,
+               "animation 1 does not exist (the mesh has 1)");
   EXPECT_FAILS(proxMesh_Animate(skin, -1, 0.0), PROX_ERROR_INVALID_ARGUMENT, "animation -1 does not exist");
   EXPECT_FAILS(proxMesh_Animate(skin, 0, std::nan("")), PROX_ERROR_INVALID_ARGUMENT, "seconds is nan");
   proxAnimationInfo info{};
@@ -259,9 +270,10 @@ TEST(RigCapi, FloatWeightsOffOneWarn) {
   int32_t length = 0;
   char text[1024];
   ASSERT_OK(proxMesh_GetWarnings(mesh, text, sizeof text, &length));
-  EXPECT_NE(std::string(text).find("WEIGHTS_0 accessor 2: the float weights of 1 of 3 vertices do not sum to 1 "
-                                   "(vertex 1's sum to 0.18)"),
-            std::string::npos)
+  EXPECT_NE(
+      std::string(text).find("WEIGHTS_0 accessor 2: the float weights of 1 of 3 vertices do not sum to 1 "
+                             "(vertex 1's sum to 0.18)"),
+      std::string::npos)
       << text;
 }
 

@@ -50,8 +50,9 @@ std::shared_ptr<const Model> deformed(const Model& rest, const runtime::MeshRig&
 }
 
 TEST(RigAccuracy, PreciseMatchesTheReferenceOnDeformedSamples) {
-  const char* const files[] = {"gltf/SimpleSkin.gltf",      "gltf/RiggedSimple.glb",       "gltf/RiggedFigure.glb",
-                               "gltf/RecursiveSkeletons.glb", "gltf/SimpleMorph.gltf",       "gltf/AnimatedMorphCube.glb",
+  const char* const files[] = {"gltf/SimpleSkin.gltf",         "gltf/RiggedSimple.glb",
+                               "gltf/RiggedFigure.glb",        "gltf/RecursiveSkeletons.glb",
+                               "gltf/SimpleMorph.gltf",        "gltf/AnimatedMorphCube.glb",
                                "gltf/MorphPrimitivesTest.glb", "gltf/InterpolationTest.glb"};
   constexpr int kPosesPerShape = 20;
   for (const char* file : files) {
@@ -66,14 +67,16 @@ TEST(RigAccuracy, PreciseMatchesTheReferenceOnDeformedSamples) {
       for (const double f : {0.3, 0.65, 1.0}) {
         runtime::MeshRig shape(r.rig);
         const rig::Animation& anim = r.rig->animations[a];
-        ASSERT_TRUE(shape.animate(static_cast<std::int64_t>(a), anim.start + f * (anim.end - anim.start), status));
+        ASSERT_TRUE(
+            shape.animate(static_cast<std::int64_t>(a), anim.start + f * (anim.end - anim.start), status));
         shapes.push_back(shape);
       }
     if (shapes.empty())
       for (const double w : {1.0, 0.25}) {
         runtime::MeshRig shape(r.rig);
         const std::vector<double> weights(r.rig->morph_weight_count(), w);
-        ASSERT_TRUE(shape.set_morph_weights(weights.data(), static_cast<std::int64_t>(weights.size()), status))
+        ASSERT_TRUE(
+            shape.set_morph_weights(weights.data(), static_cast<std::int64_t>(weights.size()), status))
             << status.message();
         shapes.push_back(shape);
       }
@@ -102,9 +105,10 @@ TEST(RigAccuracy, PreciseMatchesTheReferenceOnDeformedSamples) {
         total.recalled += m.recalled, total.confirmed += m.confirmed;
       }
     }
-    std::printf("[ rig accuracy ] %-28s %2zu shapes (%d moved), %4d reference LMDs: recall %.4f precision %.4f\n",
-                file, shapes.size(), moved, total.reference, double(total.recalled) / total.reference,
-                double(total.confirmed) / std::max(1, total.found));
+    std::printf(
+        "[ rig accuracy ] %-28s %2zu shapes (%d moved), %4d reference LMDs: recall %.4f precision %.4f\n",
+        file, shapes.size(), moved, total.reference, double(total.recalled) / total.reference,
+        double(total.confirmed) / std::max(1, total.found));
     EXPECT_GT(moved, 0) << "no shape moved a vertex: the comparison would be of rest poses only";
     EXPECT_EQ(total.recalled, total.reference);
     EXPECT_EQ(total.confirmed, total.found);

@@ -17,7 +17,8 @@ using M = std::array<double, 16>;  // column-major: element (row r, column c) at
 using json = nlohmann::json;
 
 std::uint32_t u32(const unsigned char* p) {
-  return std::uint32_t{p[0]} | std::uint32_t{p[1]} << 8 | std::uint32_t{p[2]} << 16 | std::uint32_t{p[3]} << 24;
+  return std::uint32_t{p[0]} | std::uint32_t{p[1]} << 8 | std::uint32_t{p[2]} << 16 |
+         std::uint32_t{p[3]} << 24;
 }
 
 std::vector<unsigned char> base64(const std::string& text) {
@@ -63,7 +64,8 @@ M multiply(const M& a, const M& b) {
 
 std::array<double, 3> apply(const M& m, const std::array<double, 3>& p) {
   std::array<double, 3> r{};
-  for (int row = 0; row < 3; ++row) r[row] = m[row] * p[0] + m[4 + row] * p[1] + m[8 + row] * p[2] + m[12 + row];
+  for (int row = 0; row < 3; ++row)
+    r[row] = m[row] * p[0] + m[4 + row] * p[1] + m[8 + row] * p[2] + m[12 + row];
   return r;
 }
 
@@ -108,7 +110,8 @@ std::vector<double> sample_at(const Document& doc, const json& s, int width, boo
   const std::size_t group = static_cast<std::size_t>(width) * (cubic ? 3 : 1);
   const auto value = [&](std::size_t k, int part) {  // part: 0 in-tangent, 1 value, 2 out-tangent
     const std::size_t base = k * group + (cubic ? static_cast<std::size_t>(part * width) : 0);
-    return std::vector<double>(out.begin() + static_cast<long>(base), out.begin() + static_cast<long>(base + width));
+    return std::vector<double>(out.begin() + static_cast<long>(base),
+                               out.begin() + static_cast<long>(base + width));
   };
   std::vector<double> r;
   const std::size_t n = in.size();
@@ -129,10 +132,12 @@ std::vector<double> sample_at(const Document& doc, const json& s, int width, boo
         const auto q = slerp({a[0], a[1], a[2], a[3]}, {b[0], b[1], b[2], b[3]}, u);
         r.assign(q.begin(), q.end());
       } else {
-        for (int c = 0; c < width; ++c) r.push_back((1 - u) * a[static_cast<std::size_t>(c)] + u * b[static_cast<std::size_t>(c)]);
+        for (int c = 0; c < width; ++c)
+          r.push_back((1 - u) * a[static_cast<std::size_t>(c)] + u * b[static_cast<std::size_t>(c)]);
       }
     } else {
-      const std::vector<double> p0 = value(k, 1), m0 = value(k, 2), p1 = value(k + 1, 1), m1 = value(k + 1, 0);
+      const std::vector<double> p0 = value(k, 1), m0 = value(k, 2), p1 = value(k + 1, 1),
+                                m1 = value(k + 1, 0);
       for (int c = 0; c < width; ++c) {
         const std::size_t i = static_cast<std::size_t>(c);
         r.push_back((2 * u * u * u - 3 * u * u + 1) * p0[i] + (u * u * u - 2 * u * u + u) * dt * m0[i] +
@@ -159,7 +164,9 @@ std::array<double, 4> slerp(const std::array<double, 4>& a, const std::array<dou
   std::array<double, 4> r{};
   if (cosine > 1 - 1e-6) {
     double len = 0;
-    for (int i = 0; i < 4; ++i) r[static_cast<std::size_t>(i)] = a[static_cast<std::size_t>(i)] * (1 - t) + b[static_cast<std::size_t>(i)] * t;
+    for (int i = 0; i < 4; ++i)
+      r[static_cast<std::size_t>(i)] =
+          a[static_cast<std::size_t>(i)] * (1 - t) + b[static_cast<std::size_t>(i)] * t;
     for (double x : r) len += x * x;
     for (double& x : r) x /= std::sqrt(len);
     return r;
@@ -179,7 +186,8 @@ Document parse(const std::vector<unsigned char>& bytes) {
     const std::size_t next = 20 + json_length;
     if (next + 8 <= bytes.size()) {
       const std::uint32_t bin_length = u32(&bytes[next]);
-      bin.assign(bytes.begin() + static_cast<long>(next + 8), bytes.begin() + static_cast<long>(next + 8 + bin_length));
+      bin.assign(bytes.begin() + static_cast<long>(next + 8),
+                 bytes.begin() + static_cast<long>(next + 8 + bin_length));
     }
   } else {
     doc.json = json::parse(bytes.begin(), bytes.end());
@@ -207,8 +215,8 @@ Document open(const std::string& path) {
 std::vector<double> accessor(const Document& doc, int index, int* components_out) {
   const json& a = doc.json["accessors"][static_cast<std::size_t>(index)];
   if (a.contains("sparse")) throw std::runtime_error("sparse accessors are not read here");
-  static const std::map<std::string, int> kComponents = {{"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3},
-                                                         {"VEC4", 4},   {"MAT4", 16}};
+  static const std::map<std::string, int> kComponents = {
+      {"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}, {"MAT4", 16}};
   const int components = kComponents.at(a["type"].get<std::string>());
   if (components_out) *components_out = components;
   const int type = a["componentType"].get<int>();
@@ -217,9 +225,11 @@ std::vector<double> accessor(const Document& doc, int index, int* components_out
   const std::size_t count = a["count"].get<std::size_t>();
   const json& view = doc.json["bufferViews"][a["bufferView"].get<std::size_t>()];
   const std::vector<unsigned char>& buffer = doc.buffers.at(view["buffer"].get<std::size_t>());
-  const std::size_t stride = view.value("byteStride", std::size_t{0}) != 0 ? view["byteStride"].get<std::size_t>()
-                                                                          : size * static_cast<std::size_t>(components);
-  const unsigned char* base = buffer.data() + view.value("byteOffset", std::size_t{0}) + a.value("byteOffset", std::size_t{0});
+  const std::size_t stride = view.value("byteStride", std::size_t{0}) != 0
+                                 ? view["byteStride"].get<std::size_t>()
+                                 : size * static_cast<std::size_t>(components);
+  const unsigned char* base =
+      buffer.data() + view.value("byteOffset", std::size_t{0}) + a.value("byteOffset", std::size_t{0});
   std::vector<double> out;
   for (std::size_t i = 0; i < count; ++i)
     for (std::size_t c = 0; c < static_cast<std::size_t>(components); ++c) {
@@ -283,7 +293,8 @@ std::vector<std::array<double, 9>> triangles(const Document& doc, int animation,
       l.weights = numbers(node["weights"], {});
       l.has_weights = true;
     }
-    for (const auto& child : node.value("children", json::array())) parent[child.get<std::size_t>()] = static_cast<int>(n);
+    for (const auto& child : node.value("children", json::array()))
+      parent[child.get<std::size_t>()] = static_cast<int>(n);
   }
   if (animation >= 0) {
     const json& a = doc.json["animations"][static_cast<std::size_t>(animation)];
@@ -330,7 +341,9 @@ std::vector<std::array<double, 9>> triangles(const Document& doc, int animation,
         std::size_t j = 0;
         for (const auto& joint : skin["joints"]) {
           M inverse = identity();
-          if (!ibm.empty()) std::copy(ibm.begin() + static_cast<long>(16 * j), ibm.begin() + static_cast<long>(16 * j + 16), inverse.begin());
+          if (!ibm.empty())
+            std::copy(ibm.begin() + static_cast<long>(16 * j), ibm.begin() + static_cast<long>(16 * j + 16),
+                      inverse.begin());
           joint_matrices.push_back(multiply(world(joint.get<std::size_t>()), inverse));
           ++j;
         }
@@ -341,8 +354,8 @@ std::vector<std::array<double, 9>> triangles(const Document& doc, int animation,
         const std::size_t count = positions.size() / 3;
         std::vector<double> morphed = positions;
         if (primitive.contains("targets")) {
-          std::vector<double> weights = local[n].has_weights ? local[n].weights
-                                                             : numbers(mesh.value("weights", json()), {});
+          std::vector<double> weights =
+              local[n].has_weights ? local[n].weights : numbers(mesh.value("weights", json()), {});
           weights.resize(primitive["targets"].size(), 0.0);
           std::size_t t = 0;
           for (const auto& target : primitive["targets"]) {
@@ -355,7 +368,8 @@ std::vector<std::array<double, 9>> triangles(const Document& doc, int animation,
         }
         std::vector<std::array<double, 3>> placed(count);
         if (joint_matrices.empty()) {
-          for (std::size_t v = 0; v < count; ++v) placed[v] = apply(node_world, {morphed[3 * v], morphed[3 * v + 1], morphed[3 * v + 2]});
+          for (std::size_t v = 0; v < count; ++v)
+            placed[v] = apply(node_world, {morphed[3 * v], morphed[3 * v + 1], morphed[3 * v + 2]});
         } else {
           std::vector<std::vector<double>> joints, weights;
           for (int set = 0; attributes.contains("JOINTS_" + std::to_string(set)); ++set) {
@@ -372,7 +386,8 @@ std::vector<std::array<double, 9>> triangles(const Document& doc, int animation,
                 if (w == 0) continue;
                 const auto q = apply(joint_matrices[static_cast<std::size_t>(joints[set][4 * v + k])],
                                      {morphed[3 * v], morphed[3 * v + 1], morphed[3 * v + 2]});
-                for (int c = 0; c < 3; ++c) p[static_cast<std::size_t>(c)] += w * q[static_cast<std::size_t>(c)];
+                for (int c = 0; c < 3; ++c)
+                  p[static_cast<std::size_t>(c)] += w * q[static_cast<std::size_t>(c)];
               }
             placed[v] = p;
           }
@@ -381,7 +396,8 @@ std::vector<std::array<double, 9>> triangles(const Document& doc, int animation,
         for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
           std::array<double, 9> tri{};
           for (std::size_t k = 0; k < 3; ++k)
-            for (std::size_t c = 0; c < 3; ++c) tri[3 * k + c] = placed[static_cast<std::size_t>(indices[i + k])][c];
+            for (std::size_t c = 0; c < 3; ++c)
+              tri[3 * k + c] = placed[static_cast<std::size_t>(indices[i + k])][c];
           result.push_back(tri);
         }
       }

@@ -47,7 +47,7 @@ struct SkinnedTriangle {
       bin.insert(bin.end(), b, b + n);
     };
     const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
-    put(positions, sizeof positions);  // 36 bytes at 0
+    put(positions, sizeof positions);                                         // 36 bytes at 0
     for (const int j : joints) bin.push_back(static_cast<unsigned char>(j));  // 12 bytes at 36
     const std::size_t weights_at = bin.size();
     for (const double w : weights) {
@@ -83,13 +83,16 @@ struct SkinnedTriangle {
            "}],\"accessors\":[{\"bufferView\":0,\"count\":3,\"componentType\":5126,\"type\":\"VEC3\"},"
            "{\"bufferView\":1,\"count\":3,\"componentType\":5121,\"type\":\"VEC4\"},"
            "{\"bufferView\":2,\"count\":3,\"componentType\":" +
-           type + normalized + ",\"type\":\"VEC4\"},{\"bufferView\":3,\"count\":" + std::to_string(joint_count) +
+           type + normalized +
+           ",\"type\":\"VEC4\"},{\"bufferView\":3,\"count\":" + std::to_string(joint_count) +
            ",\"componentType\":5126,\"type\":\"MAT4\"}" +
-           (bare_primitive ? ",{\"bufferView\":0,\"count\":3,\"componentType\":5126,\"type\":\"VEC3\"}" : "") +
+           (bare_primitive ? ",{\"bufferView\":0,\"count\":3,\"componentType\":5126,\"type\":\"VEC3\"}"
+                           : "") +
            "],\"meshes\":[{\"primitives\":[{\"attributes\":"
            "{\"POSITION\":0,\"JOINTS_0\":1,\"WEIGHTS_0\":2" +
            (second_joints_set ? ",\"JOINTS_1\":1" : "") + "}}" +
-           (bare_primitive ? ",{\"attributes\":{\"POSITION\":4}}" : "") + "]}],\"skins\":[{\"joints\":[" + joints_list +
+           (bare_primitive ? ",{\"attributes\":{\"POSITION\":4}}" : "") + "]}],\"skins\":[{\"joints\":[" +
+           joints_list +
            "],\"inverseBindMatrices\":3}],\"nodes\":[{\"mesh\":0,\"skin\":0},{\"children\":[2]},"
            "{\"translation\":[1,0,0]}],\"scene\":0,\"scenes\":[{\"nodes\":[0,1]}]}";
   }
@@ -120,7 +123,8 @@ struct MorphedTriangle {
       put({0, 0, 0, 1, 0, 0});
     return "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[0]}],\"nodes\":[{\"mesh\":0" +
            std::string(node_matrix ? ",\"matrix\":[1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1]" : "") +
-           "}],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"targets\":[{\"POSITION\":1}]}]}],"
+           "}],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"targets\":[{\"POSITION\":1}]}]"
+           "}],"
            "\"animations\":[{\"channels\":[{\"sampler\":0,\"target\":{\"node\":0,\"path\":\"" +
            path + "\"}}],\"samplers\":[{\"input\":2,\"output\":3}]}],\"buffers\":[{\"byteLength\":" +
            std::to_string(bin.size()) + ",\"uri\":\"data:application/octet-stream;base64," + base64(bin) +

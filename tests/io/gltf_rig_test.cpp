@@ -156,7 +156,8 @@ struct Keys {
 };
 Keys keys_of(const gltf_reference::Document& doc, int animation) {
   const auto& s = doc.json["animations"][static_cast<std::size_t>(animation)]["samplers"][0];
-  return {gltf_reference::accessor(doc, s["input"].get<int>()), gltf_reference::accessor(doc, s["output"].get<int>())};
+  return {gltf_reference::accessor(doc, s["input"].get<int>()),
+          gltf_reference::accessor(doc, s["output"].get<int>())};
 }
 
 TEST(GltfRig, InterpolationFollowsTheSpecification) {
@@ -221,11 +222,14 @@ TEST(GltfRig, InterpolationFollowsTheSpecification) {
     const Keys k = keys_of(doc, 4);
     const double t0 = k.times[1], t1 = k.times[2], td = t1 - t0, u = 0.3;
     // Keyframe k holds (in-tangent, value, out-tangent), 4 numbers each.
-    const auto at = [&](std::size_t key, std::size_t part, std::size_t c) { return k.values[12 * key + 4 * part + c]; };
+    const auto at = [&](std::size_t key, std::size_t part, std::size_t c) {
+      return k.values[12 * key + 4 * part + c];
+    };
     double want[4], norm = 0.0;
     for (std::size_t c = 0; c < 4; ++c) {
-      want[c] = (2 * u * u * u - 3 * u * u + 1) * at(1, 1, c) + td * (u * u * u - 2 * u * u + u) * at(1, 2, c) +
-                (-2 * u * u * u + 3 * u * u) * at(2, 1, c) + td * (u * u * u - u * u) * at(2, 0, c);
+      want[c] = (2 * u * u * u - 3 * u * u + 1) * at(1, 1, c) +
+                td * (u * u * u - 2 * u * u + u) * at(1, 2, c) + (-2 * u * u * u + 3 * u * u) * at(2, 1, c) +
+                td * (u * u * u - u * u) * at(2, 0, c);
       norm += want[c] * want[c];
     }
     const rig::Quat q = pose_at(4, t0 + u * td).local[6].rotation;
@@ -289,7 +293,8 @@ TEST(GltfRigRules, NormalizedIntegerWeightsMustSumToTheirMaximum) {
   EXPECT_TRUE(load_memory(t.json(), out, nullptr).is_ok());
   t.weights[5] = 126;
   std::string message = refused(t);
-  EXPECT_TRUE(contains(message, "WEIGHTS_0 accessor 2: vertex 1's normalized integer weights sum to 254, not 255"))
+  EXPECT_TRUE(
+      contains(message, "WEIGHTS_0 accessor 2: vertex 1's normalized integer weights sum to 254, not 255"))
       << message;
   t.weight_type = gltf_rig_files::WeightType::UShort;
   t.weights = {65535, 0, 0, 0, 30000, 30000, 0, 0, 65535, 0, 0, 0};
@@ -301,7 +306,8 @@ TEST(GltfRigRules, JointsMustBeInRange) {
   gltf_rig_files::SkinnedTriangle t;
   t.joints[8] = 5;  // vertex 2, weight 1
   std::string message = refused(t);
-  EXPECT_TRUE(contains(message, "JOINTS_0 accessor 1: a vertex has joint 5, but skin 0 has 2 joints")) << message;
+  EXPECT_TRUE(contains(message, "JOINTS_0 accessor 1: a vertex has joint 5, but skin 0 has 2 joints"))
+      << message;
   // A joint past the skin's is refused even with weight 0.
   t.joints[8] = 1;
   t.joints[11] = 2;
@@ -321,7 +327,8 @@ TEST(GltfRigRules, EverySkinnedPrimitiveHasJoints) {
   gltf_rig_files::SkinnedTriangle t;
   t.bare_primitive = true;
   const std::string message = refused(t);
-  EXPECT_TRUE(contains(message, "node 0 has skin 0 but mesh 0 primitive 1 has no JOINTS_0 and WEIGHTS_0")) << message;
+  EXPECT_TRUE(contains(message, "node 0 has skin 0 but mesh 0 primitive 1 has no JOINTS_0 and WEIGHTS_0"))
+      << message;
 }
 
 // Animations: keyframe times strictly increasing; an animated node has
@@ -339,8 +346,9 @@ TEST(GltfRigRules, AnimationsFollowTheRules) {
   t.times[1] = 0;
   status = load_memory(t.json(), out, nullptr);
   EXPECT_EQ(status.code(), StatusCode::ParseError);
-  EXPECT_TRUE(contains(status.message(), "animation 0 sampler 0: input accessor 2: keyframe 1 at 0 s (glTF: times "
-                                         "are finite, not negative and strictly increasing)"))
+  EXPECT_TRUE(contains(status.message(),
+                       "animation 0 sampler 0: input accessor 2: keyframe 1 at 0 s (glTF: times "
+                       "are finite, not negative and strictly increasing)"))
       << status.message();
 
   t = gltf_rig_files::MorphedTriangle();
@@ -368,7 +376,8 @@ TEST(GltfRigRules, FloatWeightsOffOneAreNormalizedWithAWarning) {
   const Status status = load_memory(t.json(), out, &warnings);
   ASSERT_TRUE(status.is_ok()) << status.message();
   ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_TRUE(contains(warnings[0], "WEIGHTS_0 accessor 2: the float weights of 1 of 3 vertices do not sum to 1"))
+  EXPECT_TRUE(
+      contains(warnings[0], "WEIGHTS_0 accessor 2: the float weights of 1 of 3 vertices do not sum to 1"))
       << warnings[0];
   EXPECT_TRUE(contains(warnings[0], "vertex 1's sum to 0.18")) << warnings[0];
   // Normalized: half on each joint, as with weights 0.5 and 0.5.

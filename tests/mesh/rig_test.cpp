@@ -115,15 +115,18 @@ TEST(Rig, FinalizeNamesWhatDoesNotFit) {
   Rig rig = two_joints();
   rig.nodes[1].parent = 2;  // 1 -> 2 -> 1
   EXPECT_FALSE(rig.finalize(status));
-  EXPECT_NE(status.message().find("2 nodes are on a cycle of parents"), std::string::npos) << status.message();
+  EXPECT_NE(status.message().find("2 nodes are on a cycle of parents"), std::string::npos)
+      << status.message();
   rig = two_joints();
   rig.meshes[0].joints[4] = 7;
   EXPECT_FALSE(rig.finalize(status));
-  EXPECT_NE(status.message().find("joint 7 is past skin 0's 2 joints"), std::string::npos) << status.message();
+  EXPECT_NE(status.message().find("joint 7 is past skin 0's 2 joints"), std::string::npos)
+      << status.message();
   rig = two_joints();
   rig.vertex_count = 4;
   EXPECT_FALSE(rig.finalize(status));
-  EXPECT_NE(status.message().find("the instances hold 3 vertices, not 4"), std::string::npos) << status.message();
+  EXPECT_NE(status.message().find("the instances hold 3 vertices, not 4"), std::string::npos)
+      << status.message();
 }
 
 }  // namespace

@@ -278,9 +278,9 @@ PROX_API proxResult proxMesh_GetSkinInfo(proxMeshId mesh, int32_t skin, proxSkin
 PROX_API proxResult proxMesh_GetAnimationCount(proxMeshId mesh, int32_t* count);
 
 typedef struct proxAnimationInfo {
-  char name[64];    /* NUL-terminated, cut to 63 bytes; "animation N" when the file names none */
-  double duration;  /* seconds: the last keyframe's time (glTF time starts at 0) */
-  double start;     /* seconds: the first keyframe's time */
+  char name[64];   /* NUL-terminated, cut to 63 bytes; "animation N" when the file names none */
+  double duration; /* seconds: the last keyframe's time (glTF time starts at 0) */
+  double start;    /* seconds: the first keyframe's time */
   int32_t channelCount;
   int32_t reserved;
 } proxAnimationInfo;

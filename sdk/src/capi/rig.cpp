@@ -63,8 +63,8 @@ void pose(runtime::World& w, runtime::Handle h, Change&& change) {
     for (int c = 0; c < 3; ++c)
       if (!(std::abs(positions[v][c]) <= kMaxCoordinate)) {
         r = before;
-        fail(PROX_ERROR_INVALID_ARGUMENT, "the pose puts vertex " + std::to_string(v) + " at a coordinate of " +
-                                              std::to_string(positions[v][c]) +
+        fail(PROX_ERROR_INVALID_ARGUMENT, "the pose puts vertex " + std::to_string(v) +
+                                              " at a coordinate of " + std::to_string(positions[v][c]) +
                                               ", beyond the +-1e50 Proxima supports");
       }
   if (!w.set_vertices(h, positions, status)) {
@@ -129,8 +129,9 @@ proxResult proxMesh_GetAnimationInfo(proxMeshId mesh, int32_t index, proxAnimati
     const rig::Rig* r = rig_of(*w, h);
     const std::size_t count = r ? r->animations.size() : 0;
     if (index < 0 || static_cast<std::size_t>(index) >= count)
-      fail(PROX_ERROR_INVALID_ARGUMENT,
-           "index " + std::to_string(index) + " names no animation (the mesh has " + std::to_string(count) + ")");
+      fail(PROX_ERROR_INVALID_ARGUMENT, "index " + std::to_string(index) +
+                                            " names no animation (the mesh has " + std::to_string(count) +
+                                            ")");
     const rig::Animation& a = r->animations[static_cast<std::size_t>(index)];
     copy_name(a.name, info->name);
     info->duration = a.end;
@@ -151,7 +152,8 @@ proxResult proxMesh_SetJointMatrices(proxMeshId mesh, int32_t skin, const double
   return guard("proxMesh_SetJointMatrices", [&] {
     runtime::World* w = nullptr;
     const runtime::Handle h = mesh_of(mesh, w);
-    pose(*w, h, [&](runtime::MeshRig& r, Status& s) { return r.set_joint_matrices(skin, matrices, count, s); });
+    pose(*w, h,
+         [&](runtime::MeshRig& r, Status& s) { return r.set_joint_matrices(skin, matrices, count, s); });
   });
 }
 

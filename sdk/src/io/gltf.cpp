@@ -46,12 +46,12 @@ using gltf_detail::AccessorUse;
 using gltf_detail::check_glb;
 using gltf_detail::component_size;
 using gltf_detail::component_type_name;
+using gltf_detail::GlbLayout;
 using gltf_detail::kMaxU32;
 using gltf_detail::LocalMesh;
 using gltf_detail::MeshInstance;
-using gltf_detail::type_name;
-using gltf_detail::GlbLayout;
 using gltf_detail::precheck_json;
+using gltf_detail::type_name;
 
 // ---------------------------------------------------------------------------
 // Files
@@ -96,7 +96,6 @@ std::string trim(std::string s) {
 
 // ---------------------------------------------------------------------------
 // The scene
-
 
 class Decoder {
  public:
@@ -314,7 +313,8 @@ class Decoder {
       for (std::size_t v = 0; v < count; ++v) {
         const Vec3& p = rest[in.first_vertex + v];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-          return error("node " + std::to_string(in.node) + ": a vertex of its mesh overflows to infinity at rest");
+          return error("node " + std::to_string(in.node) +
+                       ": a vertex of its mesh overflows to infinity at rest");
         std::copy(&p.x, &p.x + 3, target.positions.begin() + static_cast<std::ptrdiff_t>(3 * (base + v)));
       }
     }
@@ -448,8 +448,8 @@ class Decoder {
             status = error(what + ": byteStride " + std::to_string(view_stride) + " is less than the " +
                            std::to_string(element) + "-byte element");
           else
-            status = reader_.check_span(accessor.byteOffset, accessor.count, view_stride != 0 ? view_stride : element,
-                                element, length, what);
+            status = reader_.check_span(accessor.byteOffset, accessor.count,
+                                        view_stride != 0 ? view_stride : element, element, length, what);
         }
       }
     }

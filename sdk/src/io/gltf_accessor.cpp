@@ -11,10 +11,10 @@ namespace {
 struct UseSpec {
   const char* role;
   std::size_t components;
-  int type;          // TINYGLTF_TYPE_*
-  unsigned floats;   // 1: FLOAT allowed
-  unsigned plain;    // bit per integer component type allowed not normalized (see bit_of)
-  unsigned normed;   // bit per integer component type allowed normalized
+  int type;         // TINYGLTF_TYPE_*
+  unsigned floats;  // 1: FLOAT allowed
+  unsigned plain;   // bit per integer component type allowed not normalized (see bit_of)
+  unsigned normed;  // bit per integer component type allowed normalized
   const char* allowed;
 
   bool accepts(int accessor_type, int component, bool normalized) const {
@@ -48,18 +48,38 @@ UseSpec spec_of(AccessorUse use) {
       // Float, or (KHR_mesh_quantization) 8- and 16-bit integers, normalized
       // or not. Accepted whether or not the file declares the extension: the
       // values are unambiguous. The extension does not allow UNSIGNED_INT.
-      return {"POSITION", 3, TINYGLTF_TYPE_VEC3, 1, kSmallInts, kSmallInts,
+      return {"POSITION",
+              3,
+              TINYGLTF_TYPE_VEC3,
+              1,
+              kSmallInts,
+              kSmallInts,
               "VEC3 of FLOAT, or of BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT with KHR_mesh_quantization"};
     case AccessorUse::Index:
-      return {"indices", 1, TINYGLTF_TYPE_SCALAR, 0, 2 | 8 | 16, 0,
+      return {"indices",
+              1,
+              TINYGLTF_TYPE_SCALAR,
+              0,
+              2 | 8 | 16,
+              0,
               "SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT"};
     case AccessorUse::MorphPosition:
-      return {"a morph target's POSITION", 3, TINYGLTF_TYPE_VEC3, 1, kSmallInts, kSmallInts,
+      return {"a morph target's POSITION",
+              3,
+              TINYGLTF_TYPE_VEC3,
+              1,
+              kSmallInts,
+              kSmallInts,
               "VEC3 of FLOAT, or of BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT with KHR_mesh_quantization"};
     case AccessorUse::Joints:
       return {"JOINTS_n", 4, TINYGLTF_TYPE_VEC4, 0, 2 | 8, 0, "VEC4 of UNSIGNED_BYTE or UNSIGNED_SHORT"};
     case AccessorUse::Weights:
-      return {"WEIGHTS_n", 4, TINYGLTF_TYPE_VEC4, 1, 0, 2 | 8,
+      return {"WEIGHTS_n",
+              4,
+              TINYGLTF_TYPE_VEC4,
+              1,
+              0,
+              2 | 8,
               "VEC4 of FLOAT, or of normalized UNSIGNED_BYTE or UNSIGNED_SHORT"};
     case AccessorUse::InverseBindMatrix:
       return {"inverseBindMatrices", 16, TINYGLTF_TYPE_MAT4, 1, 0, 0, "MAT4 of FLOAT"};
@@ -68,10 +88,20 @@ UseSpec spec_of(AccessorUse use) {
     case AccessorUse::Vec3Output:
       return {"a translation or scale sampler's output", 3, TINYGLTF_TYPE_VEC3, 1, 0, 0, "VEC3 of FLOAT"};
     case AccessorUse::RotationOutput:
-      return {"a rotation sampler's output", 4, TINYGLTF_TYPE_VEC4, 1, 0, kSmallInts,
+      return {"a rotation sampler's output",
+              4,
+              TINYGLTF_TYPE_VEC4,
+              1,
+              0,
+              kSmallInts,
               "VEC4 of FLOAT, or of normalized BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT"};
     case AccessorUse::WeightsOutput:
-      return {"a weights sampler's output", 1, TINYGLTF_TYPE_SCALAR, 1, 0, kSmallInts,
+      return {"a weights sampler's output",
+              1,
+              TINYGLTF_TYPE_SCALAR,
+              1,
+              0,
+              kSmallInts,
               "SCALAR of FLOAT, or of normalized BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT"};
   }
   return {"an accessor", 1, -1, 0, 0, 0, "none"};
@@ -176,7 +206,7 @@ double read_component(const unsigned char* p, int type, bool normalized) {
 
 // A view's bytes, checked to lie inside its buffer.
 Status AccessorReader::buffer_view(int index, const std::string& where, const unsigned char*& data,
-                                 std::size_t& length) const {
+                                   std::size_t& length) const {
   if (index < 0 || static_cast<std::size_t>(index) >= model_.bufferViews.size())
     return error(where + ": bufferView " + std::to_string(index) + " does not exist (the file has " +
                  std::to_string(model_.bufferViews.size()) + ")");
@@ -198,7 +228,8 @@ Status AccessorReader::buffer_view(int index, const std::string& where, const un
 // `count` elements of `element` bytes, `stride` apart from `offset`, must
 // lie within `length` bytes: offset + (count - 1) * stride + element.
 Status AccessorReader::check_span(std::uint64_t offset, std::uint64_t count, std::uint64_t stride,
-                                std::uint64_t element, std::uint64_t length, const std::string& what) const {
+                                  std::uint64_t element, std::uint64_t length,
+                                  const std::string& what) const {
   if (count == 0) return Status::ok();
   if (offset > length || element > length - offset || count - 1 > (length - offset - element) / stride)
     return error(what + ": " + std::to_string(count) + " elements of " + std::to_string(element) +
@@ -209,7 +240,8 @@ Status AccessorReader::check_span(std::uint64_t offset, std::uint64_t count, std
 
 // Accessor `index` as count * components doubles: the base bufferView (or
 // zeros without one), then the sparse substitutions.
-Status AccessorReader::read(int index, const std::string& where, AccessorUse use, std::vector<double>& out) const {
+Status AccessorReader::read(int index, const std::string& where, AccessorUse use,
+                            std::vector<double>& out) const {
   out.clear();
   if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size())
     return error(where + ": accessor " + std::to_string(index) + " does not exist (the file has " +

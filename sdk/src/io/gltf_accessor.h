@@ -59,7 +59,8 @@ class AccessorReader {
 
   Status error(const std::string& message) const { return {StatusCode::ParseError, name_ + ": " + message}; }
   // A view's bytes, checked to lie inside its buffer.
-  Status buffer_view(int index, const std::string& where, const unsigned char*& data, std::size_t& length) const;
+  Status buffer_view(int index, const std::string& where, const unsigned char*& data,
+                     std::size_t& length) const;
   // `count` elements of `element` bytes, `stride` apart from `offset`, must
   // lie within `length` bytes: offset + (count - 1) * stride + element.
   Status check_span(std::uint64_t offset, std::uint64_t count, std::uint64_t stride, std::uint64_t element,

@@ -46,7 +46,8 @@ class RigReader {
   RigReader(const tinygltf::Model& model, const std::string& name, std::vector<std::string>* warnings)
       : model_(model), name_(name), warnings_(warnings), reader_(model, name) {}
 
-  Status run(const std::vector<LocalMesh>& meshes, const std::vector<MeshInstance>& instances, rig::Rig& rig) {
+  Status run(const std::vector<LocalMesh>& meshes, const std::vector<MeshInstance>& instances,
+             rig::Rig& rig) {
     Status status = read_nodes(rig);
     std::map<int, std::uint32_t> mesh_of, skin_of;
     for (std::size_t i = 0; status && i < instances.size(); ++i) {
@@ -109,8 +110,8 @@ class RigReader {
           return error(where + " has a child " + std::to_string(child) + " that does not exist");
         rig::Node& c = rig.nodes[static_cast<std::size_t>(child)];
         if (c.parent != -1)
-          return error("node " + std::to_string(child) + " has two parents (nodes " + std::to_string(c.parent) +
-                       " and " + std::to_string(n) + ")");
+          return error("node " + std::to_string(child) + " has two parents (nodes " +
+                       std::to_string(c.parent) + " and " + std::to_string(n) + ")");
         c.parent = static_cast<int>(n);
       }
       if (!all_finite(node.matrix) || !all_finite(node.translation) || !all_finite(node.rotation) ||
@@ -126,7 +127,8 @@ class RigReader {
         continue;
       }
       if ((!node.translation.empty() && node.translation.size() != 3) ||
-          (!node.rotation.empty() && node.rotation.size() != 4) || (!node.scale.empty() && node.scale.size() != 3))
+          (!node.rotation.empty() && node.rotation.size() != 4) ||
+          (!node.scale.empty() && node.scale.size() != 3))
         return error(where + ": translation, rotation or scale has the wrong number of values");
       if (!node.translation.empty())
         out.rest.translation = {node.translation[0], node.translation[1], node.translation[2]};
@@ -146,9 +148,10 @@ class RigReader {
       const tinygltf::Primitive& p = mesh.primitives[static_cast<std::size_t>(local.primitives[k].primitive)];
       if (k > 0 && p.targets.size() != targets)
         return error(named("mesh", static_cast<std::size_t>(index), mesh.name) + ": primitive " +
-                     std::to_string(local.primitives[k].primitive) + " has " + std::to_string(p.targets.size()) +
-                     " morph targets, primitive " + std::to_string(local.primitives[0].primitive) + " has " +
-                     std::to_string(targets) + " (glTF: every primitive has the same number)");
+                     std::to_string(local.primitives[k].primitive) + " has " +
+                     std::to_string(p.targets.size()) + " morph targets, primitive " +
+                     std::to_string(local.primitives[0].primitive) + " has " + std::to_string(targets) +
+                     " (glTF: every primitive has the same number)");
       targets = p.targets.size();
       std::size_t joints = 0, weights = 0;
       for (const auto& attribute : p.attributes) {
@@ -161,10 +164,12 @@ class RigReader {
         return error(where + " has " + std::to_string(joints) + " JOINTS_n and " + std::to_string(weights) +
                      " WEIGHTS_n attributes (glTF: as many of each)");
       for (std::size_t s = 0; s < joints; ++s)
-        if (!p.attributes.count("JOINTS_" + std::to_string(s)) || !p.attributes.count("WEIGHTS_" + std::to_string(s)))
+        if (!p.attributes.count("JOINTS_" + std::to_string(s)) ||
+            !p.attributes.count("WEIGHTS_" + std::to_string(s)))
           return error(where + " has no JOINTS_" + std::to_string(s) + " or WEIGHTS_" + std::to_string(s) +
                        " but " + std::to_string(joints) + " JOINTS_n (they are numbered from 0)");
-      if (joints == 0 && lacking_joints_.count(index) == 0) lacking_joints_[index] = local.primitives[k].primitive;
+      if (joints == 0 && lacking_joints_.count(index) == 0)
+        lacking_joints_[index] = local.primitives[k].primitive;
       sets = std::max(sets, joints);
     }
     const std::size_t n = out.positions.size();
@@ -172,10 +177,10 @@ class RigReader {
     // bound what they unfold to (2^26 deltas, 1.5 GiB).
     constexpr std::uint64_t kMaxDeltas = std::uint64_t{1} << 26;
     if (targets > 0 && std::uint64_t{n} * targets > kMaxDeltas)
-      return {StatusCode::Unsupported, name_ + ": " + named("mesh", static_cast<std::size_t>(index), mesh.name) +
-                                           ": " + std::to_string(targets) + " morph targets of " +
-                                           std::to_string(n) + " vertices are more than the " +
-                                           std::to_string(kMaxDeltas) + " deltas Proxima reads"};
+      return {StatusCode::Unsupported,
+              name_ + ": " + named("mesh", static_cast<std::size_t>(index), mesh.name) + ": " +
+                  std::to_string(targets) + " morph targets of " + std::to_string(n) +
+                  " vertices are more than the " + std::to_string(kMaxDeltas) + " deltas Proxima reads"};
     out.targets.assign(targets, std::vector<Vec3>(n, Vec3(0.0)));
     out.influences = static_cast<std::uint32_t>(4 * sets);
     out.joints.assign(n * out.influences, 0);
@@ -216,8 +221,9 @@ class RigReader {
       Status status = reader_.read(it->second, what, AccessorUse::MorphPosition, values);
       if (!status) return status;
       if (values.size() != 3 * std::size_t{range.count})
-        return error(what + " accessor " + std::to_string(it->second) + ": " + std::to_string(values.size() / 3) +
-                     " elements for the primitive's " + std::to_string(range.count) + " vertices");
+        return error(what + " accessor " + std::to_string(it->second) + ": " +
+                     std::to_string(values.size() / 3) + " elements for the primitive's " +
+                     std::to_string(range.count) + " vertices");
       if (!all_finite(values))
         return error(what + " accessor " + std::to_string(it->second) + ": a non-finite delta");
       for (std::uint32_t v = 0; v < range.count; ++v)
@@ -245,8 +251,8 @@ class RigReader {
       if (status) status = reader_.read(wa, wname, AccessorUse::Weights, weights);
       if (!status) return status;
       if (joints.size() != 4 * std::size_t{range.count} || weights.size() != 4 * std::size_t{range.count})
-        return error(where + ": JOINTS_" + std::to_string(s) + " accessor " + std::to_string(ja) + " or WEIGHTS_" +
-                     std::to_string(s) + " accessor " + std::to_string(wa) +
+        return error(where + ": JOINTS_" + std::to_string(s) + " accessor " + std::to_string(ja) +
+                     " or WEIGHTS_" + std::to_string(s) + " accessor " + std::to_string(wa) +
                      " does not have one element per vertex (" + std::to_string(range.count) + ")");
       weight_types[s] = model_.accessors[static_cast<std::size_t>(wa)].componentType;
       weight_accessors[s] = wa;
@@ -265,8 +271,8 @@ class RigReader {
     // should sum to 1 and are normalized when they do not.
     const bool floats = std::any_of(weight_types.begin(), weight_types.end(),
                                     [](int t) { return t == TINYGLTF_COMPONENT_TYPE_FLOAT; });
-    const bool same_type = std::all_of(weight_types.begin(), weight_types.end(),
-                                       [&](int t) { return t == weight_types[0]; });
+    const bool same_type =
+        std::all_of(weight_types.begin(), weight_types.end(), [&](int t) { return t == weight_types[0]; });
     std::size_t strayed = 0;
     std::uint32_t worst_vertex = 0;
     double worst_sum = 1.0;
@@ -285,7 +291,8 @@ class RigReader {
         continue;
       }
       if (std::abs(sum - 1.0) > kWeightTolerance) {
-        if (strayed == 0 || std::abs(sum - 1.0) > std::abs(worst_sum - 1.0)) worst_vertex = v, worst_sum = sum;
+        if (strayed == 0 || std::abs(sum - 1.0) > std::abs(worst_sum - 1.0))
+          worst_vertex = v, worst_sum = sum;
         ++strayed;
       }
       if (sum > 0.0) {
@@ -296,16 +303,17 @@ class RigReader {
     }
     if (strayed > 0)
       warn(where + ": WEIGHTS_0 accessor " + std::to_string(weight_accessors[0]) + ": the float weights of " +
-           std::to_string(strayed) + " of " + std::to_string(range.count) + " vertices do not sum to 1 (vertex " +
-           std::to_string(worst_vertex) + "'s sum to " + number(worst_sum) +
-           "); each vertex's weights were divided by their sum");
+           std::to_string(strayed) + " of " + std::to_string(range.count) +
+           " vertices do not sum to 1 (vertex " + std::to_string(worst_vertex) + "'s sum to " +
+           number(worst_sum) + "); each vertex's weights were divided by their sum");
     return Status::ok();
   }
 
   // Every joint a skinned instance's mesh names must be one of its skin's.
   Status check_joints(const MeshInstance& in, std::size_t joint_count, const rig::RigMesh& mesh) const {
     const tinygltf::Mesh& source = model_.meshes[static_cast<std::size_t>(in.mesh)];
-    const std::string who = named("node", static_cast<std::size_t>(in.node), model_.nodes[static_cast<std::size_t>(in.node)].name);
+    const std::string who = named("node", static_cast<std::size_t>(in.node),
+                                  model_.nodes[static_cast<std::size_t>(in.node)].name);
     const auto lacking = lacking_joints_.find(in.mesh);
     if (lacking != lacking_joints_.end())
       return error(who + " has skin " + std::to_string(model_.nodes[static_cast<std::size_t>(in.node)].skin) +
@@ -324,8 +332,8 @@ class RigReader {
             break;
           }
         }
-        return error(who + ": " + named("mesh", static_cast<std::size_t>(in.mesh), source.name) + " " + accessor +
-                     ": a vertex has joint " + std::to_string(j) + ", but skin " +
+        return error(who + ": " + named("mesh", static_cast<std::size_t>(in.mesh), source.name) + " " +
+                     accessor + ": a vertex has joint " + std::to_string(j) + ", but skin " +
                      std::to_string(model_.nodes[static_cast<std::size_t>(in.node)].skin) + " has " +
                      std::to_string(joint_count) + " joints (glTF: joints are in range)");
       }
@@ -342,9 +350,12 @@ class RigReader {
       return error(named("node", static_cast<std::size_t>(in.node), node.name) + ": weights has " +
                    std::to_string(node.weights.size()) + " values for its mesh's " + std::to_string(targets) +
                    " morph targets");
-    out = !node.weights.empty() ? node.weights : !mesh.weights.empty() ? mesh.weights : std::vector<double>(targets, 0.0);
-    if (!all_finite(out)) return error(named("node", static_cast<std::size_t>(in.node), node.name) +
-                                       ": a morph weight is not finite");
+    out = !node.weights.empty()   ? node.weights
+          : !mesh.weights.empty() ? mesh.weights
+                                  : std::vector<double>(targets, 0.0);
+    if (!all_finite(out))
+      return error(named("node", static_cast<std::size_t>(in.node), node.name) +
+                   ": a morph weight is not finite");
     return Status::ok();
   }
 
@@ -368,14 +379,16 @@ class RigReader {
     const Status status = reader_.read(skin.inverseBindMatrices, where + ": inverseBindMatrices",
                                        AccessorUse::InverseBindMatrix, values);
     if (!status) return status;
-    const std::string what = where + ": inverseBindMatrices accessor " + std::to_string(skin.inverseBindMatrices);
+    const std::string what =
+        where + ": inverseBindMatrices accessor " + std::to_string(skin.inverseBindMatrices);
     if (values.size() < 16 * out.joints.size())
       return error(what + ": " + std::to_string(values.size() / 16) + " matrices for " +
                    std::to_string(out.joints.size()) + " joints");
     if (!all_finite(values)) return error(what + ": a non-finite value");
     for (std::size_t j = 0; j < out.joints.size(); ++j)
       for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r) out.inverse_bind[j][c][r] = values[16 * j + static_cast<std::size_t>(4 * c + r)];
+        for (int r = 0; r < 4; ++r)
+          out.inverse_bind[j][c][r] = values[16 * j + static_cast<std::size_t>(4 * c + r)];
     return Status::ok();
   }
 
@@ -431,8 +444,10 @@ class RigReader {
         if (!status) return status;
       } else if (out.samplers[known->second].width != width) {
         return error(at + ": sampler " + std::to_string(channel.sampler) + " gives " +
-                     std::to_string(out.samplers[known->second].width) + " values per keyframe to an earlier "
-                     "channel but " + channel.target_path + " here needs " + std::to_string(width));
+                     std::to_string(out.samplers[known->second].width) +
+                     " values per keyframe to an earlier "
+                     "channel but " +
+                     channel.target_path + " here needs " + std::to_string(width));
       }
       const rig::Sampler& s = out.samplers[known->second];
       out.start = first ? s.times.front() : std::min(out.start, s.times.front());
@@ -444,8 +459,8 @@ class RigReader {
   }
 
   // Sampler `index` of `animation`, `width` values per keyframe (its output read for `use`).
-  Status read_sampler(const tinygltf::Animation& animation, const std::string& where, int index, AccessorUse use,
-                      std::uint32_t width, const std::string& path, rig::Sampler& s) const {
+  Status read_sampler(const tinygltf::Animation& animation, const std::string& where, int index,
+                      AccessorUse use, std::uint32_t width, const std::string& path, rig::Sampler& s) const {
     const tinygltf::AnimationSampler& sampler = animation.samplers[static_cast<std::size_t>(index)];
     const std::string sat = where + " sampler " + std::to_string(index);
     if (sampler.interpolation == "LINEAR" || sampler.interpolation.empty())

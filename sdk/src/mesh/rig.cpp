@@ -135,8 +135,8 @@ bool Rig::finalize(Status& status) {
     }
     for (const std::uint32_t j : skin.joints)
       if (j >= node_count) {
-        status = invalid("skin " + std::to_string(s) + " has joint node " + std::to_string(j) + ", past the " +
-                         std::to_string(node_count) + " nodes");
+        status = invalid("skin " + std::to_string(s) + " has joint node " + std::to_string(j) +
+                         ", past the " + std::to_string(node_count) + " nodes");
         return false;
       }
   }
@@ -169,8 +169,8 @@ bool Rig::finalize(Status& status) {
       }
       for (const std::uint32_t j : m.joints)
         if (j >= joints) {
-          status = invalid(what + ": joint " + std::to_string(j) + " is past skin " + std::to_string(in.skin) +
-                           "'s " + std::to_string(joints) + " joints");
+          status = invalid(what + ": joint " + std::to_string(j) + " is past skin " +
+                           std::to_string(in.skin) + "'s " + std::to_string(joints) + " joints");
           return false;
         }
     }
@@ -186,7 +186,8 @@ bool Rig::finalize(Status& status) {
     bool ok = mesh.joints.size() == n * mesh.influences && mesh.weights.size() == n * mesh.influences;
     for (const auto& target : mesh.targets) ok = ok && target.size() == n;
     if (!ok) {
-      status = invalid("mesh " + std::to_string(m) + "'s joints, weights or morph targets do not have one "
+      status = invalid("mesh " + std::to_string(m) +
+                       "'s joints, weights or morph targets do not have one "
                        "entry per vertex");
       return false;
     }

@@ -42,8 +42,8 @@ bool MeshRig::set_joint_matrices(std::int64_t skin, const double* matrices, std:
                                  Status& status) {
   const std::size_t skins = rig_->skins.size();
   if (skin < 0 || static_cast<std::uint64_t>(skin) >= skins) {
-    status = invalid("skin " + std::to_string(skin) + " does not exist (the mesh has " + std::to_string(skins) +
-                     ")");
+    status = invalid("skin " + std::to_string(skin) + " does not exist (the mesh has " +
+                     std::to_string(skins) + ")");
     return false;
   }
   const std::size_t joints = rig_->skins[static_cast<std::size_t>(skin)].joints.size();
@@ -108,7 +108,8 @@ bool MeshRig::set_morph_weights(const double* weights, std::int64_t count, Statu
 }
 
 void MeshRig::welded_positions(const Mesh& mesh, std::vector<Vec3>& out) const {
-  rig_->positions(pose_, joint_worlds_, input_);
+  std::vector<Vec3> input;
+  rig_->positions(pose_, joint_worlds_, input);
   out.assign(mesh.vertex_count(), Vec3(0.0));
   std::vector<char> set(mesh.vertex_count(), 0);
   const std::uint32_t n = std::min<std::uint32_t>(mesh.input_vertex_count(), rig_->vertex_count);
@@ -116,7 +117,7 @@ void MeshRig::welded_positions(const Mesh& mesh, std::vector<Vec3>& out) const {
     const std::uint32_t w = mesh.welded_vertex(v);
     if (w == kNoVertex || set[w]) continue;  // the first input vertex wins
     set[w] = 1;
-    out[w] = input_[v];
+    out[w] = input[v];
   }
 }
 

@@ -42,7 +42,6 @@ class MeshRig {
   std::shared_ptr<const rig::Rig> rig_;
   rig::Pose pose_;
   std::vector<std::vector<rig::Mat4>> joint_worlds_;  // per skin; empty: from the nodes
-  mutable std::vector<Vec3> input_;                   // scratch
 };
 
 }  // namespace prox::runtime

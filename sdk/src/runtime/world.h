@@ -314,7 +314,8 @@ class World {
   std::vector<MeshSlot> meshes_;
   std::vector<BodySlot> bodies_;
   PairMap pairs_;
-  std::unordered_map<std::uint32_t, MeshRig> rigs_;  // by mesh slot, for rigged meshes
+  // glTF rigs, by mesh slot (rigged meshes only).
+  std::unordered_map<std::uint32_t, MeshRig> rigs_;
   Broadphase broadphase_;  // the deterministic step's
   // Moves with every change the broadphase must see: bodies created or
   // destroyed, static and movable bodies moved (tools move every step and
