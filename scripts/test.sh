@@ -84,6 +84,7 @@ build/release/bench/proxima_bench --scene all --poses 5 --builds 1 --meshes buil
 build/release/bench/proxima_timing_bench --seconds 0.1 --out build/bench-smoke >/dev/null
 build/release/bench/proxima_patches_bench --runs 1 >/dev/null
 build/release/bench/proxima_fidelity_bench --scene bunny --speeds 50 >/dev/null
+build/release/bench/proxima_deform_bench --frames 2 --churn-seconds 0.5 >/dev/null
 ctest --test-dir build/release --output-on-failure -j "$jobs"
 
 stage "Python bindings (bindings/python): pip install into a fresh venv, then pytest"

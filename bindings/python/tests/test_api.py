@@ -179,6 +179,31 @@ def test_bodies_poses_and_types(world, bunny):
     assert world.stats.bodies == 3 and world.stats.tools == 1
 
 
+def test_set_vertices_deforms_the_mesh_for_every_body_using_it(world):
+    v, t = cube()
+    wall_mesh, tool_mesh = world.create_mesh(v * 0.1, t), world.create_mesh(v * 0.1, t)
+    world.create_body(wall_mesh, "static")
+    tool = world.create_body(tool_mesh, "tool", pose=([0.104, 0, 0], [1, 0, 0, 0]), reference_point=[0.05] * 3)
+    world.step()
+    assert tool.contacts()["distance"].min() == pytest.approx(0.004, rel=1e-9)
+    # The wall's +x face moves 1.5 mm towards the tool: 2.5 mm to go.
+    moved, _ = wall_mesh.triangles()
+    moved[moved[:, 0] > 0.05, 0] += 0.0015
+    wall_mesh.set_vertices(moved)
+    np.testing.assert_array_equal(wall_mesh.triangles()[0], moved)
+    assert wall_mesh.info.bounds_max[0] == pytest.approx(0.1015)
+    world.step()
+    assert tool.contacts()["distance"].min() == pytest.approx(0.0025, rel=1e-9)
+    with pytest.raises(proxima.InvalidArgument, match="vertexCount is 7 but the mesh has 8"):
+        wall_mesh.set_vertices(moved[:7])
+    bad = moved.copy()
+    bad[5, 1] = np.nan
+    with pytest.raises(proxima.InvalidArgument, match="vertex 5 has a non-finite y"):
+        wall_mesh.set_vertices(bad)
+    with pytest.raises(proxima.InvalidArgument, match="shape"):
+        wall_mesh.set_vertices(moved.ravel())
+
+
 def _near_scene(world, mesh):
     rock = world.create_body(mesh, "static")
     tool = world.create_body(mesh, "tool", pose=NEAR_POSE, reference_point=box_centre(mesh))

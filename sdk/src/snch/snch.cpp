@@ -105,6 +105,13 @@ void refit_inner(std::vector<SnchNode>& nodes, std::vector<SnchBox>& boxes) {
   }
 }
 
+// A refit takes one angle per leaf cone and per vertex spread, of the
+// normal whose dot product with the axis is least, where a build takes the
+// largest of all the angles. Dot products that round the other way belong
+// to angles within about 2e-16 / sin(angle) of each other, at most 2e-8 rad
+// near a zero angle: the refit widens its angles by this much to cover that.
+constexpr double kRefitAngleMargin = 3e-8;
+
 }  // namespace
 
 Cone Snch::leaf_cone(const Mesh& mesh, std::uint32_t t, const std::vector<std::uint8_t>& open) {
@@ -235,7 +242,7 @@ Snch::Snch(const Mesh& mesh) {
     node.cone_sin = std::sin(node.cone.half_angle);
   }
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) two_sided_ = two_sided_ || open_[v];
-  compute_vertex_spread(mesh);
+  compute_vertex_spread(mesh, false);
   stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
   stats_.memory_bytes = nodes_.capacity() * sizeof(SnchNode) + boxes_.capacity() * sizeof(SnchBox) +
                         vertex_spread_.capacity() * sizeof(double) + open_.capacity();
@@ -251,15 +258,28 @@ Snch::Snch(const Mesh& mesh) {
   stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void Snch::compute_vertex_spread(const Mesh& mesh) {
+void Snch::compute_vertex_spread(const Mesh& mesh, bool one_angle) {
   vertex_spread_.assign(mesh.vertex_count(), 0.5 * kPi);
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
     const Vec3& normal = mesh.vertex_normal(v);
     if (open_[v] || !(glm::dot(normal, normal) > 0.0)) continue;
     double spread = 0.0;
-    for (const std::uint32_t* t = mesh.vertex_triangles_begin(v); t != mesh.vertex_triangles_end(v); ++t) {
-      const Vec3& f = mesh.face_normal(*t);
-      if (glm::dot(f, f) > 0.0) spread = std::max(spread, angle_between(normal, f));
+    if (one_angle) {
+      // As the leaf cones of a refit: the face normal least aligned has the
+      // widest angle, up to the dot products' rounding, which the margin covers.
+      double least = 2.0;
+      Vec3 widest = normal;
+      for (const std::uint32_t* t = mesh.vertex_triangles_begin(v); t != mesh.vertex_triangles_end(v); ++t) {
+        const Vec3& f = mesh.face_normal(*t);
+        const double d = glm::dot(normal, f);
+        if (d < least && glm::dot(f, f) > 0.0) least = d, widest = f;
+      }
+      spread = angle_between(normal, widest) + kRefitAngleMargin;
+    } else {
+      for (const std::uint32_t* t = mesh.vertex_triangles_begin(v); t != mesh.vertex_triangles_end(v); ++t) {
+        const Vec3& f = mesh.face_normal(*t);
+        if (glm::dot(f, f) > 0.0) spread = std::max(spread, angle_between(normal, f));
+      }
     }
     vertex_spread_[v] = std::min(spread, 0.5 * kPi);
   }
@@ -294,8 +314,8 @@ void Snch::refit(const Mesh& mesh) {
       boxes_[i] = box_between(glm::min(glm::min(tri.v[0], tri.v[1]), tri.v[2]),
                               glm::max(glm::max(tri.v[0], tri.v[1]), tri.v[2]));
       // leaf_cone(), with one angle per leaf: the normal least aligned with
-      // the axis has the widest angle, up to rounding of the dot products
-      // (a few 1e-8 rad at worst, near a zero angle), which the margin covers.
+      // the axis has the widest angle, up to the dot products' rounding,
+      // which the margin covers.
       const auto& idx = mesh.indices(t);
       node.cone = Cone::everything();
       if (open_[idx[0]] || open_[idx[1]] || open_[idx[2]]) continue;
@@ -311,7 +331,7 @@ void Snch::refit(const Mesh& mesh) {
           const double d = glm::dot(axis, normal);
           if (d < least && glm::dot(normal, normal) > 0.0) least = d, widest = normal;
         }
-      const double half = angle_between(axis, widest) + 3e-8;
+      const double half = angle_between(axis, widest) + kRefitAngleMargin;
       if (half < 0.5 * kPi) node.cone = {axis, half};
     }
   }
@@ -320,7 +340,7 @@ void Snch::refit(const Mesh& mesh) {
     node.cone_cos = std::cos(node.cone.half_angle);
     node.cone_sin = std::sin(node.cone.half_angle);
   }
-  compute_vertex_spread(mesh);
+  compute_vertex_spread(mesh, true);
   stats_.refits += 1;
   stats_.degradation = radius_ratio() / built_ratio_;
   stats_.refit_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -104,8 +104,9 @@ class Snch {
   double built_ratio_ = 1.0;
   // The inner nodes' summed radii over the root's, of the tree as it is.
   double radius_ratio() const;
-  // Every vertex's spread (vertex_spread) from the mesh's normals.
-  void compute_vertex_spread(const Mesh& mesh);
+  // Every vertex's spread (vertex_spread) from the mesh's normals; with
+  // `one_angle`, a refit's: one angle per vertex, widened by a margin.
+  void compute_vertex_spread(const Mesh& mesh, bool one_angle);
   bool two_sided_ = false;
   SnchStats stats_;
 };

@@ -119,6 +119,29 @@ namespace Proxima.Tests
         }
 
         [Test]
+        public void SetVerticesDeformsTheMeshEveryBodyUses()
+        {
+            Mesh wallMesh = Support.Cube(world);
+            Body wall = world.CreateBody(wallMesh, BodyType.Static, Pose.Identity);
+            Body other = world.CreateBody(Support.Cube(world), BodyType.Movable,
+                                          new Pose(new Vec3(0.104, 0, 0), Quat.Identity));
+            Assert.AreEqual(0.004, wall.DistanceTo(other), 1e-12);
+            // The wall's +x face 1.5 mm nearer.
+            wallMesh.GetTriangles(out double[] positions, out uint[] _);
+            for (int i = 0; i < positions.Length; i += 3)
+                if (positions[i] > 0) positions[i] += 0.0015;
+            wallMesh.SetVertices(positions);
+            Assert.AreEqual(0.0515, wallMesh.Info.BoundsMax.X, 1e-15);
+            Assert.AreEqual(0.0025, wall.DistanceTo(other), 1e-12);
+            Support.Throws(Result.InvalidArgument, "vertexCount is 7",
+                           () => wallMesh.SetVertices(new double[21]));
+            positions[4] = double.NaN;
+            Support.Throws(Result.InvalidArgument, "vertex 1 has a non-finite y", () => wallMesh.SetVertices(positions));
+            Assert.Throws<ArgumentException>(() => wallMesh.SetVertices(new double[4]));
+            Assert.Throws<ArgumentNullException>(() => wallMesh.SetVertices(null));
+        }
+
+        [Test]
         public void BadArraysAreNamed()
         {
             double[] p = Support.BoxPositions(new Vec3(0, 0, 0), new Vec3(1, 1, 1));

@@ -74,7 +74,7 @@ namespace Proxima.Tests
         }
 
         [Test]
-        public void ThreadsRunAndFreezeTheScene()
+        public void ThreadsRunAndToolsStayWhileTheyRun()
         {
             ThreadSettings settings = ThreadSettings.Default;
             settings.HapticTiming = HapticTiming.Sleep;
@@ -83,9 +83,13 @@ namespace Proxima.Tests
             {
                 Support.Throws(Result.Busy, "already running", () => world.StartThreads(ThreadSettings.Default));
                 Support.Throws(Result.Busy, "StopThreads", world.Step);
-                Support.Throws(Result.Busy, "StopThreads", () => Support.Cube(world));
-                Support.Throws(Result.Busy, "StopThreads", () => world.CreateBody(cube, BodyType.Static, Pose.Identity));
-                Support.Throws(Result.Busy, "StopThreads", tool.Destroy);
+                // Meshes and static bodies come and go while the threads run; tools stay.
+                Mesh more = Support.Cube(world);
+                Body block = world.CreateBody(more, BodyType.Static, new Pose(new Vec3(0, 1, 0), Quat.Identity));
+                block.Destroy();
+                more.Destroy();
+                Support.Throws(Result.Busy, "stopped", () => world.CreateBody(cube, BodyType.Tool, Pose.Identity));
+                Support.Throws(Result.Busy, "stopped", tool.Destroy);
                 tool.Pose = new Pose(new Vec3(0.1015, 0, 0), Quat.Identity);
                 Thread.Sleep(200);
                 Assert.IsTrue(world.GetThreadStats(ThreadRole.Haptic).Running);

@@ -1,0 +1,314 @@
+// Deforming meshes and a scene that changes while the threads run
+// (docs/dynamic-scenes.md):
+//
+//   refit   per frame of a smooth deformation (a sheet under a travelling
+//           wave, 10^3 to 10^5 triangles; the bunny bent by the same wave):
+//           moving the vertices, refitting the hierarchy, building it anew,
+//           and the whole World::set_vertices (a copy beside the published
+//           shape, refit, publish); then the search's node pairs on the
+//           refitted tree after every frame against a tree built afresh for
+//           the same shape;
+//   churn   a static body made and destroyed at 100 Hz beside a held tool
+//           while the threads run: the haptic loop's period p99 and max.
+//
+// Prints a table and writes build/deform-bench.json with --json FILE.
+//   proxima_deform_bench [--frames N] [--churn-seconds S] [--json FILE]
+#include "common/json_writer.h"
+#include "contact/proximity.h"
+#include "io/obj.h"
+#include "runtime/scripted_device.h"
+#include "runtime/threads.h"
+#include "runtime/world.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+using namespace prox;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kPi = 3.14159265358979323846;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+struct Shape {
+  std::string name;
+  std::vector<double> positions;  // x y z per vertex
+  std::vector<std::uint32_t> indices;
+};
+
+// A square sheet of n x n cells, two triangles each, side 0.2 m, facing +z.
+Shape sheet(int n) {
+  Shape s{"sheet-" + std::to_string(2 * n * n), {}, {}};
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) s.positions.insert(s.positions.end(), {0.2 * i / n, 0.2 * j / n, 0.0});
+  const auto row = static_cast<std::uint32_t>(n + 1);
+  for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(n); ++j)
+    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i) {
+      const std::uint32_t a = j * row + i, b = a + 1, c = a + row, d = c + 1;
+      s.indices.insert(s.indices.end(), {a, b, d, a, d, c});
+    }
+  return s;
+}
+
+// The wave at frame f of a 60 Hz animation: each vertex moved along `axis`
+// by amplitude * sin(2 pi (x / wavelength - f / 60)), x along the first axis.
+void wave(const Mesh& rest, int frame, int axis, double amplitude, double wavelength, std::vector<double>& out) {
+  out.resize(3 * std::size_t{rest.vertex_count()});
+  for (std::uint32_t v = 0; v < rest.vertex_count(); ++v) {
+    Vec3 p = rest.vertex(v);
+    p[axis] += amplitude * std::sin(2.0 * kPi * (p.x / wavelength - frame / 60.0));
+    for (int c = 0; c < 3; ++c) out[3 * std::size_t{v} + static_cast<std::size_t>(c)] = p[c];
+  }
+}
+
+struct RefitRow {
+  std::string mesh;
+  std::uint32_t triangles = 0;
+  double move_ms = 0, refit_ms = 0, rebuild_ms = 0, world_ms = 0;
+  int rebuilds = 0;  // World::set_vertices that rebuilt rather than refitted
+  double degradation = 1.0;
+  double node_pairs_ratio = 1.0;  // the search's node pairs, refitted tree over fresh tree, median
+};
+
+RefitRow refit_row(const Shape& shape, int frames, int axis, double amplitude, double wavelength) {
+  RefitRow row;
+  row.mesh = shape.name;
+  Status status;
+  const MeshInput input{shape.positions.data(), static_cast<std::uint32_t>(shape.positions.size() / 3),
+                        shape.indices.data(), static_cast<std::uint32_t>(shape.indices.size() / 3)};
+  const Mesh rest = Mesh::build(input, status);
+  if (!status) throw std::runtime_error(shape.name + ": " + status.message());
+  row.triangles = rest.triangle_count();
+  Mesh mesh = rest;
+  Snch snch(rest);
+  // A probe to search against: a small sheet 1 mm above the rest shape's
+  // middle, facing down, so that the search has contacts to find.
+  const Shape probe_shape = sheet(8);
+  Mesh probe = Mesh::build({probe_shape.positions.data(), 81, probe_shape.indices.data(), 128}, status);
+  const Snch probe_snch(probe);
+  const Aabb box = rest.bounds();
+  const Vec3 middle = 0.5 * (box.min + box.max);
+  Pose probe_pose{glm::dmat3(1.0), Vec3(middle.x - 0.1, middle.y - 0.1, box.max.z + amplitude + 0.001)};
+  probe_pose.rotation = glm::dmat3(1, 0, 0, 0, -1, 0, 0, 0, -1);  // facing down
+  probe_pose.translation.y += 0.2;
+
+  runtime::World world{runtime::WorldSettings{}};
+  const runtime::Handle handle = world.create_mesh(input, status);
+  std::vector<double> move, refit, rebuild, in_world, ratio;
+  std::vector<double> xyz;
+  for (int f = 1; f <= frames; ++f) {
+    wave(rest, f, axis, amplitude, wavelength, xyz);
+    auto t0 = Clock::now();
+    if (!mesh.set_vertices(xyz.data(), mesh.vertex_count())) throw std::runtime_error("set_vertices");
+    move.push_back(seconds_since(t0));
+    t0 = Clock::now();
+    snch.refit(mesh);
+    refit.push_back(seconds_since(t0));
+    t0 = Clock::now();
+    const Snch fresh(mesh);
+    rebuild.push_back(seconds_since(t0));
+    t0 = Clock::now();
+    const std::uint64_t before = world.snch(handle).stats().refits;
+    if (!world.set_vertices(handle, xyz.data(), mesh.vertex_count(), status))
+      throw std::runtime_error(status.message());
+    in_world.push_back(seconds_since(t0));
+    if (world.snch(handle).stats().refits <= before) ++row.rebuilds;
+    // The search on both trees: what refitting costs in node pairs.
+    PairState s1, s2;
+    ProximityResult on_refit, on_fresh;
+    find_lmds({&probe, &probe_snch, probe_pose, &mesh, &snch, Pose{}, 0.005}, Method::Precise, s1, on_refit);
+    find_lmds({&probe, &probe_snch, probe_pose, &mesh, &fresh, Pose{}, 0.005}, Method::Precise, s2, on_fresh);
+    if (on_fresh.global.node_pairs > 0)
+      ratio.push_back(double(on_refit.global.node_pairs) / double(on_fresh.global.node_pairs));
+    if (on_refit.lmds.size() != on_fresh.lmds.size())
+      throw std::runtime_error(shape.name + ": the refitted tree found other LMDs than a fresh one");
+  }
+  row.move_ms = 1e3 * median(move);
+  row.refit_ms = 1e3 * median(refit);
+  row.rebuild_ms = 1e3 * median(rebuild);
+  row.world_ms = 1e3 * median(in_world);
+  row.degradation = snch.stats().degradation;
+  row.node_pairs_ratio = median(ratio);
+  return row;
+}
+
+struct ChurnRow {
+  double seconds = 0;
+  int made = 0;
+  double haptic_p50_ms = 0, haptic_p99_ms = 0, haptic_max_ms = 0;
+  double still_p99_ms = 0, still_max_ms = 0;  // the same run with nothing made or destroyed
+};
+
+// The bunny held 1 mm from a static bunny by the scripted device; a small
+// cube made within the tool's cutoff and destroyed again at `rate` Hz.
+ChurnRow churn(const std::string& bunny_path, double seconds, double rate) {
+  io::ObjData obj;
+  const Status read = io::read_obj(bunny_path, obj);
+  if (!read) throw std::runtime_error(read.message());
+  const double cube_corners[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+  std::vector<double> cube;
+  for (double c : cube_corners) cube.push_back(0.005 * c);
+  const std::vector<std::uint32_t> cube_indices = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                                                   2, 3, 7, 2, 7, 6, 1, 2, 6, 1, 6, 5, 0, 4, 7, 0, 7, 3};
+  ChurnRow row;
+  row.seconds = seconds;
+  for (int pass = 0; pass < 2; ++pass) {
+    const bool changing = pass == 1;
+    runtime::World world{runtime::WorldSettings{}};
+    Status status;
+    const runtime::Handle mesh = world.create_mesh(
+        {obj.positions.data(), static_cast<std::uint32_t>(obj.positions.size() / 3), obj.indices.data(),
+         static_cast<std::uint32_t>(obj.indices.size() / 3)},
+        status);
+    const runtime::Handle cube_mesh = world.create_mesh({cube.data(), 8, cube_indices.data(), 12}, status);
+    if (!status) throw std::runtime_error(status.message());
+    const Aabb box = world.mesh(mesh).bounds();
+    const double width = box.max.x - box.min.x;
+    world.create_body(mesh, runtime::BodyType::Static, Pose{}, Vec3(0.0));
+    // The tool beside the wall along +x, 1 mm past its box: some of it within the cutoff.
+    const Pose held{glm::dmat3(1.0), Vec3(width + 0.001, 0.0, 0.0)};
+    const runtime::Handle tool = world.create_body(mesh, runtime::BodyType::Tool, held, Vec3(0.0));
+    runtime::ScriptedDevice device({runtime::ScriptedPose::of(held)}, 1.0, false);
+    world.set_device(tool, device.device());
+    runtime::ThreadSettings settings;
+    if (!world.start_threads(settings, status)) throw std::runtime_error(status.message());
+    const auto start = Clock::now();
+    int made = 0;
+    while (seconds_since(start) < seconds) {
+      if (changing) {
+        // Between the two bunnies' boxes, near the tool's face.
+        const Pose at{glm::dmat3(1.0), Vec3(box.max.x - 0.004, 0.5 * (box.min.y + box.max.y), 0.0)};
+        const runtime::Handle h = world.create_body(cube_mesh, runtime::BodyType::Static, at, Vec3(0.0));
+        std::this_thread::sleep_for(std::chrono::duration<double>(0.5 / rate));
+        world.destroy_body(h);
+        ++made;
+        std::this_thread::sleep_for(std::chrono::duration<double>(0.5 / rate));
+      } else {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+    }
+    const runtime::LoopSummary haptic = world.threads()->loop_summary(runtime::Role::Haptic);
+    world.stop_threads();
+    if (changing) {
+      row.made = made;
+      row.haptic_p50_ms = 1e3 * haptic.period_p50;
+      row.haptic_p99_ms = 1e3 * haptic.period_p99;
+      row.haptic_max_ms = 1e3 * haptic.period_max;
+    } else {
+      row.still_p99_ms = 1e3 * haptic.period_p99;
+      row.still_max_ms = 1e3 * haptic.period_max;
+    }
+  }
+  return row;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int frames = 60;
+  double churn_seconds = 10.0;
+  std::string json_path;
+  std::string assets = PROX_SHARED_ASSETS_DIR;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (a == "--frames" && has_value) {
+      frames = std::atoi(argv[++i]);
+    } else if (a == "--churn-seconds" && has_value) {
+      churn_seconds = std::atof(argv[++i]);
+    } else if (a == "--json" && has_value) {
+      json_path = argv[++i];
+    } else if (a == "--help" || a == "-h") {
+      std::printf("usage: proxima_deform_bench [--frames N] [--churn-seconds S] [--json FILE]\n");
+      return 0;
+    } else {
+      std::fprintf(stderr, "proxima_deform_bench: unknown option '%s' (--help)\n", a.c_str());
+      return 2;
+    }
+  }
+  if (frames < 1 || !(churn_seconds >= 0.0)) {
+    std::fprintf(stderr, "proxima_deform_bench: --frames must be >= 1 and --churn-seconds >= 0\n");
+    return 2;
+  }
+  try {
+    std::vector<RefitRow> rows;
+    // Sheets of about 1k, 10k, 60k and 100k triangles under a 5 mm wave of
+    // 10 cm wavelength travelling at 6 cm/s, and the bunny bent by it.
+    for (const int n : {23, 71, 173, 224}) rows.push_back(refit_row(sheet(n), frames, 2, 0.005, 0.1));
+    io::ObjData obj;
+    const Status read = io::read_obj(assets + "/bunny.obj", obj);
+    if (!read) throw std::runtime_error(read.message());
+    rows.push_back(refit_row({"bunny", obj.positions, obj.indices}, frames, 1, 0.005, 0.1));
+
+    std::printf("%-13s %9s %9s %9s %10s %10s %8s %11s %13s\n", "mesh", "triangles", "move ms", "refit ms",
+                "rebuild ms", "set_vert ms", "rebuilds", "degradation", "node pairs x");
+    for (const RefitRow& r : rows)
+      std::printf("%-13s %9u %9.3f %9.3f %10.3f %10.3f %8d %11.3f %13.3f\n", r.mesh.c_str(), r.triangles,
+                  r.move_ms, r.refit_ms, r.rebuild_ms, r.world_ms, r.rebuilds, r.degradation,
+                  r.node_pairs_ratio);
+    ChurnRow c;
+    if (churn_seconds > 0.0) {
+      c = churn(assets + "/bunny.obj", churn_seconds, 100.0);
+      std::printf(
+          "churn: %d bodies made and destroyed at 100 Hz in %.0f s beside a held tool: haptic period p50 %.3f "
+          "ms, p99 %.3f ms, max %.3f ms (a still scene, same run: p99 %.3f ms, max %.3f ms)\n",
+          c.made, c.seconds, c.haptic_p50_ms, c.haptic_p99_ms, c.haptic_max_ms, c.still_p99_ms, c.still_max_ms);
+    }
+    if (!json_path.empty()) {
+      JsonWriter j;
+      j.begin_object();
+      j.key("frames").value(frames);
+      j.key("refit").begin_array();
+      for (const RefitRow& r : rows) {
+        j.begin_object();
+        j.key("mesh").value(r.mesh);
+        j.key("triangles").value(static_cast<long long>(r.triangles));
+        j.key("move_ms").value(r.move_ms);
+        j.key("refit_ms").value(r.refit_ms);
+        j.key("rebuild_ms").value(r.rebuild_ms);
+        j.key("set_vertices_ms").value(r.world_ms);
+        j.key("rebuilds").value(r.rebuilds);
+        j.key("degradation").value(r.degradation);
+        j.key("node_pairs_ratio").value(r.node_pairs_ratio);
+        j.end_object();
+      }
+      j.end_array();
+      j.key("churn").begin_object();
+      j.key("seconds").value(c.seconds);
+      j.key("bodies").value(c.made);
+      j.key("haptic_period_p50_ms").value(c.haptic_p50_ms);
+      j.key("haptic_period_p99_ms").value(c.haptic_p99_ms);
+      j.key("haptic_period_max_ms").value(c.haptic_max_ms);
+      j.key("still_period_p99_ms").value(c.still_p99_ms);
+      j.key("still_period_max_ms").value(c.still_max_ms);
+      j.end_object();
+      j.end_object();
+      std::ofstream(json_path) << j.str() << "\n";
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "proxima_deform_bench: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
