@@ -191,7 +191,8 @@ TEST(RigCapi, JointMatricesFromTheEngine) {
                "matrices[1] (joint 1) is not affine");
   m[16 + 12] = 1e60;
   m[16 + 3] = 0;
-  EXPECT_FAILS(proxMesh_SetJointMatrices(mesh, 0, m, 2), PROX_ERROR_INVALID_ARGUMENT, "beyond the +-1e50");
+  EXPECT_FAILS(proxMesh_SetJointMatrices(mesh, 0, m, 2), PROX_ERROR_INVALID_ARGUMENT,
+               "vertex 1 at a coordinate of 5e+59, beyond the +-1e50");  // half on joint 1, at x = 1e60
   d = triangles_of(mesh);
   EXPECT_DOUBLE_EQ(d.positions[3 * d.indices[2] + 1], 3.0);
 }

@@ -3,6 +3,7 @@
 #include "capi/rig.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -63,8 +64,10 @@ void pose(runtime::World& w, runtime::Handle h, Change&& change) {
     for (int c = 0; c < 3; ++c)
       if (!(std::abs(positions[v][c]) <= kMaxCoordinate)) {
         r = before;
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", positions[v][c]);
         fail(PROX_ERROR_INVALID_ARGUMENT, "the pose puts vertex " + std::to_string(v) +
-                                              " at a coordinate of " + std::to_string(positions[v][c]) +
+                                              " at a coordinate of " + value +
                                               ", beyond the +-1e50 Proxima supports");
       }
   if (!w.set_vertices(h, positions, status)) {
