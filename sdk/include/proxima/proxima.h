@@ -266,6 +266,7 @@ typedef struct proxRigInfo {
   int32_t morphWeightCount; /* what proxMesh_SetMorphWeights takes */
   int32_t animationCount;
 } proxRigInfo;
+/* Game thread. */
 PROX_API proxResult proxMesh_GetRigInfo(proxMeshId mesh, proxRigInfo* info);
 
 typedef struct proxSkinInfo {
@@ -273,8 +274,10 @@ typedef struct proxSkinInfo {
   int32_t jointCount;
   int32_t reserved;
 } proxSkinInfo;
+/* Skin `skin` in [0, skinCount). Game thread. */
 PROX_API proxResult proxMesh_GetSkinInfo(proxMeshId mesh, int32_t skin, proxSkinInfo* info);
 
+/* The animations, in the file's order (0 for a mesh without a rig). Game thread. */
 PROX_API proxResult proxMesh_GetAnimationCount(proxMeshId mesh, int32_t* count);
 
 typedef struct proxAnimationInfo {
@@ -284,12 +287,14 @@ typedef struct proxAnimationInfo {
   int32_t channelCount;
   int32_t reserved;
 } proxAnimationInfo;
+/* Animation `index` in [0, count). Game thread. */
 PROX_API proxResult proxMesh_GetAnimationInfo(proxMeshId mesh, int32_t index, proxAnimationInfo* info);
 
 /* The scene at `seconds` of animation `animation` (clamped to its keyframes:
  * STEP, LINEAR with slerp for rotations, CUBICSPLINE): its nodes, skins
  * (linear blend) and morph weights; joint matrices and morph weights set
- * before are dropped. */
+ * before are dropped. Game thread; while the threads run, PROX_ERROR_BUSY
+ * for a mesh a tool holds. */
 PROX_API proxResult proxMesh_Animate(proxMeshId mesh, int32_t animation, double seconds);
 
 /* Your engine's animation system drives the skin: `count` (the skin's joint
@@ -297,12 +302,14 @@ PROX_API proxResult proxMesh_Animate(proxMeshId mesh, int32_t animation, double 
  * 4 * column + row, translation in 12, 13, 14), affine, in the mesh's own
  * frame (the glTF scene root), in the skin's joint order. Proxima multiplies
  * each by the joint's inverse bind matrix from the file. They stand for the
- * joints' nodes until the next proxMesh_Animate. */
+ * joints' nodes until the next proxMesh_Animate. Game thread; as
+ * proxMesh_Animate while the threads run. */
 PROX_API proxResult proxMesh_SetJointMatrices(proxMeshId mesh, int32_t skin, const double* matrices,
                                               int32_t count);
 
 /* Every morphed mesh instance's weights, one after the other in scene order
- * (count: proxRigInfo.morphWeightCount), until the next proxMesh_Animate. */
+ * (count: proxRigInfo.morphWeightCount), until the next proxMesh_Animate.
+ * Game thread; as proxMesh_Animate while the threads run. */
 PROX_API proxResult proxMesh_SetMorphWeights(proxMeshId mesh, const double* weights, int32_t count);
 
 /* ---- bodies ---------------------------------------------------------------- */
