@@ -256,8 +256,8 @@ PROX_API proxResult proxMesh_GetWarnings(proxMeshId mesh, char* buffer, int32_t 
  * keeps its rig (docs/dynamic-scenes.md): loaded, it is posed at rest. The
  * calls that pose it (Animate, SetJointMatrices, SetMorphWeights) replace
  * its vertices as proxMesh_SetVertices does (same topology, the hierarchy
- * refitted); where glTF vertices welded at rest move apart, the first in the
- * file's order places the vertex. All: game thread, also while the threads
+ * refitted); where glTF vertices welded at rest move apart, the first in
+ * scene order places the vertex. All: game thread, also while the threads
  * run, except (PROX_ERROR_BUSY) for a mesh a tool holds. A mesh without a
  * rig has zero of everything; posing it is PROX_ERROR_INVALID_ARGUMENT. */
 typedef struct proxRigInfo {
