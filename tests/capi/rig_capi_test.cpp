@@ -14,6 +14,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <initializer_list>
 #include <limits>
 #include <string>
 #include <vector>
@@ -235,6 +237,55 @@ TEST(RigCapi, MisuseIsRefusedByName) {
   EXPECT_FAILS(proxMesh_GetAnimationCount(skin, nullptr), PROX_ERROR_INVALID_ARGUMENT, "count is NULL");
   EXPECT_FAILS(proxMesh_Animate(proxMeshId{}, 0, 0.0), PROX_ERROR_INVALID_HANDLE, "mesh");
   EXPECT_OK(proxMesh_SetMorphWeights(skin, nullptr, 0));  // no morph targets: count 0, nothing to read
+}
+
+// A seam: two primitives share the position (0, 1, 0) at rest (welded into
+// one vertex), but only the first's morph target moves it. Posed at weight
+// 1 the copies part; the first in scene order (primitive 0's, lifted to
+// z = 1) places the welded vertex, and the second triangle follows it.
+TEST(RigCapi, WeldedVerticesThatPartFollowTheFirst) {
+  std::vector<unsigned char> bin;
+  const auto put = [&bin](std::initializer_list<float> values) {
+    for (const float v : values) {
+      unsigned char b[4];
+      std::memcpy(b, &v, 4);
+      bin.insert(bin.end(), b, b + 4);
+    }
+  };
+  put({0, 0, 0, 1, 0, 0, 0, 1, 0});  // primitive 0 (accessor 0)
+  put({0, 0, 0, 0, 0, 0, 0, 0, 1});  // its target: vertex 2 up by 1 (accessor 1)
+  put({0, 1, 0, 1, 0, 0, 1, 1, 0});  // primitive 1 (accessor 2), vertex 0 on primitive 0's vertex 2
+  put({0, 0, 0, 0, 0, 0, 0, 0, 0});  // its target: nothing moves (accessor 3)
+  std::string views, accessors;
+  for (int k = 0; k < 4; ++k) {
+    views += std::string(k ? "," : "") + "{\"buffer\":0,\"byteOffset\":" + std::to_string(36 * k) +
+             ",\"byteLength\":36}";
+    accessors += std::string(k ? "," : "") + "{\"bufferView\":" + std::to_string(k) +
+                 ",\"componentType\":5126,\"count\":3,\"type\":\"VEC3\"}";
+  }
+  const std::string json =
+      "{\"asset\":{\"version\":\"2.0\"},\"scenes\":[{\"nodes\":[0]}],\"nodes\":[{\"mesh\":0}],"
+      "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"targets\":[{\"POSITION\":1}]},"
+      "{\"attributes\":{\"POSITION\":2},\"targets\":[{\"POSITION\":3}]}]}],"
+      "\"buffers\":[{\"byteLength\":144,\"uri\":\"data:application/octet-stream;base64," +
+      gltf_rig_files::base64(bin) + "\"}],\"bufferViews\":[" + views + "],\"accessors\":[" + accessors + "]}";
+  Fixture f;
+  const proxMeshId mesh = f.load_memory(json);
+  proxMeshInfo info{};
+  ASSERT_OK(proxMesh_GetInfo(mesh, &info));
+  ASSERT_EQ(info.vertexCount, 4u);  // 6 input vertices, (0,1,0) and (1,0,0) welded
+  const double one = 1.0;
+  ASSERT_OK(proxMesh_SetMorphWeights(mesh, &one, 1));
+  const MeshData d = triangles_of(mesh);
+  ASSERT_EQ(d.indices.size(), 6u);
+  // Both triangles' corner at (0, 1) is the lifted one.
+  int lifted = 0;
+  for (const uint32_t i : d.indices)
+    if (d.positions[3 * i] == 0 && d.positions[3 * i + 1] == 1) {
+      EXPECT_EQ(d.positions[3 * i + 2], 1.0);
+      ++lifted;
+    }
+  EXPECT_EQ(lifted, 2);
 }
 
 // While the threads run: a static body's mesh is posed (its vertices
