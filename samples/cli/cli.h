@@ -118,12 +118,22 @@ inline Settings scaled_to(Settings s, double cutoff) {
   return s;
 }
 
+// A glTF animation to pose a mesh at (proxMesh_Animate): `--animate-a
+// INDEX:SECONDS`; index -1: none.
+struct AnimateAt {
+  int32_t index = -1;
+  double seconds = 0.0;
+  bool operator==(const AnimateAt& o) const { return index == o.index && seconds == o.seconds; }
+};
+
 // One world: mesh A as a static body, mesh B (the same mesh when the paths
-// are equal) as the tool, torques about B's bounding-box centre.
+// and animations are equal) as the tool, torques about B's bounding-box
+// centre. Each mesh is first posed at its animation, if any.
 class Scene {
  public:
   Scene(const Settings& settings, const std::string& path_a, const std::string& path_b,
-        const proxPose& pose_a, const proxPose& pose_b, proxToolMode tool_mode = PROX_TOOL_FREE) {
+        const proxPose& pose_a, const proxPose& pose_b, proxToolMode tool_mode = PROX_TOOL_FREE,
+        const AnimateAt& animate_a = {}, const AnimateAt& animate_b = {}) {
     proxWorldDef def = proxDefaultWorldDef();
     def.method = settings.method;
     def.cutoff = settings.cutoff;
@@ -131,7 +141,9 @@ class Scene {
     check(proxCreateWorld(&def, &world_));
     destroy_on_failure([&] {
       mesh_a_ = load(path_a, nullptr);
-      mesh_b_ = path_b == path_a ? mesh_a_ : load(path_b, nullptr);
+      mesh_b_ = path_b == path_a && animate_b == animate_a ? mesh_a_ : load(path_b, nullptr);
+      animate(mesh_a_, animate_a, "--animate-a");
+      if (!(mesh_b_.index1 == mesh_a_.index1)) animate(mesh_b_, animate_b, "--animate-b");
       proxBodyDef body = proxDefaultBodyDef();
       body.mesh = mesh_a_;
       body.pose = pose_a;
@@ -195,6 +207,11 @@ class Scene {
       proxDestroyWorld(world_);
       throw;
     }
+  }
+  static void animate(proxMeshId mesh, const AnimateAt& at, const char* option) {
+    if (at.index < 0) return;
+    if (proxMesh_Animate(mesh, at.index, at.seconds) != PROX_SUCCESS)
+      fail(std::string(option) + ": " + proxGetLastError());
   }
   proxMeshId load(const std::string& path, double* seconds) {
     const auto start = std::chrono::steady_clock::now();

@@ -27,6 +27,28 @@ int info(Args& args) {
   std::printf("  SNCH             %u nodes, depth %u, %u unbounded leaf cones, built in %.1f ms, %.1f MiB\n",
               t.hierarchyNodes, t.hierarchyDepth, t.unboundedLeafCones, t.hierarchySeconds * 1e3,
               static_cast<double>(t.hierarchyBytes) / (1 << 20));
+  // A glTF scene's rig (docs/dynamic-scenes.md): its skins, morph weights
+  // and animations; nothing for a mesh without one.
+  proxRigInfo rig;
+  check(proxMesh_GetRigInfo(scene.mesh_a(), &rig));
+  if (rig.skinCount > 0) std::printf("  skins            %d (%d joints)\n", rig.skinCount, rig.jointCount);
+  constexpr int32_t kListed = 8;  // RecursiveSkeletons has 84 skins
+  for (int32_t s = 0; s < std::min(rig.skinCount, kListed); ++s) {
+    proxSkinInfo skin;
+    check(proxMesh_GetSkinInfo(scene.mesh_a(), s, &skin));
+    std::printf("    skin %-11d %d joints%s\n", s, skin.jointCount,
+                skin.name[0] ? (" '" + std::string(skin.name) + "'").c_str() : "");
+  }
+  if (rig.skinCount > kListed) std::printf("    ...              %d more skins\n", rig.skinCount - kListed);
+  if (rig.morphWeightCount > 0)
+    std::printf("  morph targets    %d weights (over the morphed mesh instances)\n", rig.morphWeightCount);
+  if (rig.animationCount > 0) std::printf("  animations       %d\n", rig.animationCount);
+  for (int32_t a = 0; a < rig.animationCount; ++a) {
+    proxAnimationInfo anim;
+    check(proxMesh_GetAnimationInfo(scene.mesh_a(), a, &anim));
+    std::printf("    animation %-6d %.6g s (keyframes from %.6g s), %d channels '%s'\n", a, anim.duration,
+                anim.start, anim.channelCount, anim.name);
+  }
   // What loading skipped without failing (invalid attributes Proxima does
   // not read): one line each; the mesh is loaded all the same.
   int32_t length = 0;

@@ -2,6 +2,22 @@
 #include "cli.h"
 
 namespace proxcli {
+namespace {
+
+// "INDEX:SECONDS": a glTF animation of the mesh and a time in it.
+AnimateAt parse_animate(const std::string& s, const char* option) {
+  const std::size_t colon = s.find(':');
+  if (colon == std::string::npos)
+    fail(std::string(option) + ": '" + s +
+         "' is not INDEX:SECONDS (an animation index and a time, e.g. 0:1.5)");
+  const double index = parse_number(s.substr(0, colon), option);
+  if (index < 0 || index > 2147483647.0 || index != std::floor(index))
+    fail(std::string(option) + ": the animation index '" + s.substr(0, colon) +
+         "' is not a whole number >= 0");
+  return {static_cast<int32_t>(index), parse_number(s.substr(colon + 1), option)};
+}
+
+}  // namespace
 
 int lmd(Args& args) {
   const std::string path_a = args.next("mesh A"), path_b = args.next("mesh B");
@@ -13,6 +29,7 @@ int lmd(Args& args) {
   proxPatchSettings patches{0.0, 0.0, 0.0};
   bool radius_given = false, angle_given = false, spread_given = false;  // else the world's default
   double leaf_budget = -1.0;                                             // -1: the world's default
+  AnimateAt animate_a, animate_b;
   while (!args.empty()) {
     const std::string opt = args.next("option");
     if (opt == "--pose-a")
@@ -38,7 +55,11 @@ int lmd(Args& args) {
       leaf_budget = parse_number(args.next("--leaf-budget value"), "--leaf-budget");
       if (leaf_budget < 0 || leaf_budget > 1e15 || leaf_budget != std::floor(leaf_budget))
         fail("--leaf-budget must be a whole number from 0 (no bound) to 1e15");
-    } else if (opt == "--json")
+    } else if (opt == "--animate-a")
+      animate_a = parse_animate(args.next("--animate-a INDEX:SECONDS"), "--animate-a");
+    else if (opt == "--animate-b")
+      animate_b = parse_animate(args.next("--animate-b INDEX:SECONDS"), "--animate-b");
+    else if (opt == "--json")
       json_path = args.next("--json file");
     else
       fail("lmd: unknown option '" + opt + "'");
@@ -49,7 +70,7 @@ int lmd(Args& args) {
   if (cutoff > 0.0) settings = scaled_to(settings, cutoff);
   cutoff = settings.cutoff;
   settings.method = method;
-  const Scene scene(settings, path_a, path_b, pose_a, pose_b);
+  const Scene scene(settings, path_a, path_b, pose_a, pose_b, PROX_TOOL_FREE, animate_a, animate_b);
   proxPatchSettings rule;
   check(proxWorld_GetPatchSettings(scene.world(), &rule));
   if (radius_given) rule.radiusOverCutoff = patches.radiusOverCutoff;

@@ -2,7 +2,8 @@
 //
 //   proxima info FILE
 //   proxima lmd A B [--pose-a tx ty tz qw qx qy qz] [--pose-b ...] [--cutoff D]
-//                   [--method precise|original|reference] [--force hard|soft] [--json FILE]
+//                   [--method precise|original|reference] [--force hard|soft]
+//                   [--animate-a INDEX:SECONDS] [--animate-b INDEX:SECONDS] [--json FILE]
 //   proxima polylines A B [--pose-a ...] [--pose-b ...] [--json FILE]
 //   proxima path [A B] [--poses FILE | --steps N] [--method precise|original|both] [--force hard|soft]
 //                [--csv FILE]
@@ -11,8 +12,8 @@
 // are in the meshes' units (metres for the shared assets). docs/cli.md has
 // the details and the JSON layout.
 //
-//   proxima run [A B] [--device scripted|stream|hid[:VVVV:PPPP]] [--poses FILE] [--seconds S] [--trace FILE.csv] ...
-//   proxima devices [--json FILE]
+//   proxima run [A B] [--device scripted|stream|hid[:VVVV:PPPP]] [--poses FILE] [--seconds S] [--trace
+//   FILE.csv] ... proxima devices [--json FILE]
 //
 // A customer of the SDK like any other: it sees only the C API
 // (<proxima/proxima.h>, libproxima.so) and the samples' own utilities.
@@ -26,7 +27,7 @@ const char* kUsage =
     "  proxima lmd A B [--pose-a tx ty tz qw qx qy qz] [--pose-b tx ty tz qw qx qy qz]\n"
     "                  [--cutoff D] [--method precise|original|reference] [--force hard|soft]\n"
     "                  [--patch-radius R] [--patch-angle DEG] [--patch-spread S] [--leaf-budget N]\n"
-    "                  [--json FILE]\n"
+    "                  [--animate-a INDEX:SECONDS] [--animate-b INDEX:SECONDS] [--json FILE]\n"
     "  proxima polylines A B [--pose-a tx ty tz qw qx qy qz] [--pose-b ...] [--json FILE]\n"
     "  proxima path [A B] [--poses FILE | --steps N] [--method precise|original|both] [--force hard|soft]\n"
     "               [--csv FILE]\n"

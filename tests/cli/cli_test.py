@@ -97,6 +97,66 @@ class CliTest(unittest.TestCase):
         r = run("info", self.square)
         self.assertNotIn("warning", r.stdout)
 
+    def morphed_triangle(self):
+        # The unit right triangle in z = 0 with one morph target lifting
+        # vertex 2 by 1 in z, and an animation of its weight, LINEAR from 0
+        # at t = 0 to 1 at t = 2 s.
+        import base64
+        import struct
+        data = struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0) + struct.pack("<9f", 0, 0, 0, 0, 0, 0, 0, 0, 1) + \
+            struct.pack("<2f", 0, 2) + struct.pack("<2f", 0, 1)
+        return write(self.dir.name, "morph.gltf", json.dumps({
+            "asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "targets": [{"POSITION": 1}]}]}],
+            "animations": [{"name": "lift", "channels": [{"sampler": 0, "target": {"node": 0, "path": "weights"}}],
+                            "samplers": [{"input": 2, "output": 3}]}],
+            "buffers": [{"byteLength": len(data),
+                         "uri": "data:application/octet-stream;base64," + base64.b64encode(data).decode()}],
+            "bufferViews": [{"buffer": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 36},
+                            {"buffer": 0, "byteOffset": 72, "byteLength": 8},
+                            {"buffer": 0, "byteOffset": 80, "byteLength": 8}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                          {"bufferView": 1, "componentType": 5126, "count": 3, "type": "VEC3"},
+                          {"bufferView": 2, "componentType": 5126, "count": 2, "type": "SCALAR",
+                           "min": [0], "max": [2]},
+                          {"bufferView": 3, "componentType": 5126, "count": 2, "type": "SCALAR"}]}))
+
+    def test_info_lists_the_rig(self):
+        r = run("info", self.morphed_triangle())
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertRegex(r.stdout, r"morph targets\s+1 weights")
+        self.assertRegex(r.stdout, r"animation 0\s+2 s \(keyframes from 0 s\), 1 channels 'lift'")
+        self.assertNotIn("skins", r.stdout)
+
+    def test_lmd_animates_a_gltf_before_the_query(self):
+        # At 1.5 s the weight is 0.75: vertex 2 at (0, 1, 0.75). B, the unit
+        # triangle lifted to z = 2, is then 1.25 from it (2 unanimated).
+        morph = self.morphed_triangle()
+        for extra, want in (((), 2.0), (("--animate-a", "0:1.5"), 1.25), (("--animate-a", "0:9"), 1.0)):
+            json_path = os.path.join(self.dir.name, "animated.json")
+            r = run("lmd", morph, self.tri, "--pose-b", "0", "0", "2", "1", "0", "0", "0", "--cutoff", "3",
+                    "--json", json_path, *extra)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(json_path) as f:
+                self.assertAlmostEqual(json.load(f)["min_distance"], want, delta=1e-12, msg=str(extra))
+        # B animated alone (the same file as A, so loaded twice): at 0.5 s
+        # its weight is 0.25, vertex 2 at (0, 1, 0.25); turned over about x
+        # and moved by (0, 1, 2) it is at (0, 0, 1.75), above A's flat vertex
+        # 0: 1.75 apart (2 unanimated, B's other vertices at z = 2).
+        for extra, want in (((), 2.0), (("--animate-b", "0:0.5"), 1.75)):
+            json_path = os.path.join(self.dir.name, "animated_b.json")
+            r = run("lmd", morph, morph, "--pose-b", "0", "1", "2", "0", "1", "0", "0", "--cutoff", "3",
+                    "--json", json_path, *extra)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(json_path) as f:
+                self.assertAlmostEqual(json.load(f)["min_distance"], want, delta=1e-12, msg=str(extra))
+        r = run("lmd", morph, morph, "--animate-b", "1:0.5")
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("--animate-b: proxMesh_Animate: animation 1 does not exist (the mesh has 1)", r.stderr)
+        r = run("lmd", morph, morph, "--animate-a", "0")
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("is not INDEX:SECONDS", r.stderr)
+
     def test_lmd_between_single_triangles(self):
         # B is A turned over (180 degrees about x: normal -z, facing A),
         # shifted by (0.1, 0.1) and lifted 1 mm: two parallel faces that

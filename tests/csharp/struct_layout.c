@@ -24,6 +24,9 @@ int main(void) {
   SIZE(proxWorldDef);
   SIZE(proxMeshDef);
   SIZE(proxMeshInfo);
+  SIZE(proxRigInfo);
+  SIZE(proxSkinInfo);
+  SIZE(proxAnimationInfo);
   SIZE(proxBodyDef);
   SIZE(proxContact);
   SIZE(proxContactPatch);
@@ -50,6 +53,9 @@ int main(void) {
   SIZE(proxPatchSettings);
   SIZE(proxPatchStats);
   OFFSET(proxForceSettings, maxForce);
+  OFFSET(proxSkinInfo, jointCount);
+  OFFSET(proxAnimationInfo, duration);
+  OFFSET(proxAnimationInfo, channelCount);
   OFFSET(proxThreadsDef, traceCapacity);
   OFFSET(proxHapticSample, force);
   OFFSET(proxHapticSample, flags);

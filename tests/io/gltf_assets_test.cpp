@@ -164,10 +164,12 @@ TEST(GltfAssets, DamagedHelmetQuaternion) {
                 {0.9424954056739807, 0.9009949564933777, 0.8128451108932495}, 1e-6, "DamagedHelmet");
 }
 
-// Skinned: the cylinder (local x, y in [-1, 1], z in +-4.575) in its bind
-// coordinates under its node transforms, Z_UP * Armature, which together map
-// (x, y, z) to (y, z, x).
-TEST(GltfAssets, RiggedSimpleInBindPoseUnderItsNodes) {
+// Skinned: the cylinder (local x, y in [-1, 1], z in +-4.575) posed by its
+// skin at rest (joint world x inverse bind matrix; its node's transform is
+// ignored, as glTF requires). That is its bind coordinates under Z_UP *
+// Armature, which map (x, y, z) to (y, z, x), turned a quarter about the
+// cylinder's axis: the same box. gltf_rig_test.cpp checks every vertex.
+TEST(GltfAssets, RiggedSimpleAtRest) {
   const std::vector<GltfMesh> m = load_asset("gltf/RiggedSimple.glb");
   EXPECT_EQ(triangles(m), 188u);
   expect_bounds(bounds(m), {-0.9999995827674866, -4.575077056884766, -1.0}, {1.0, 4.575077056884766, 1.0},

@@ -15,9 +15,9 @@ from ._core import (Busy, CapacityError, Error, FileError, InternalError, Invali
                     InvalidMesh, ParseError, Unsupported, VersionMismatch, WrongThread, c_dtype,
                     version_string)
 from ._devices import ScriptedDevice, StreamDevice, get_time
-from ._types import (ForceSettings, IntersectionStats, MeshInfo, MeshStats, PatchSettings, PatchStats, SafetyStats,
-                     ScriptedDeviceRecord, SearchStats, StreamDeviceStats, ThreadStats, TrackStats, WorldStats,
-                     contact_dtype)
+from ._types import (Animation, ForceSettings, IntersectionStats, MeshInfo, MeshStats, PatchSettings, PatchStats,
+                     RigInfo, SafetyStats, ScriptedDeviceRecord, Skin, SearchStats, StreamDeviceStats, ThreadStats,
+                     TrackStats, WorldStats, contact_dtype)
 from ._trace import FLAGS as HAPTIC_FLAGS, has_flag, trace_dtype
 from ._world import Body, Mesh, World, distance, force_preset
 
@@ -28,7 +28,8 @@ __version__ = version_string()
 __all__ = [
     "__version__", "World", "Mesh", "Body", "ScriptedDevice", "StreamDevice", "get_time", "distance",
     "force_preset", "c_dtype", "StreamDeviceStats", "trace_dtype", "has_flag", "HAPTIC_FLAGS",
-    "contact_dtype", "ForceSettings", "MeshInfo", "MeshStats", "WorldStats", "SearchStats", "TrackStats",
+    "contact_dtype", "ForceSettings", "MeshInfo", "MeshStats", "RigInfo", "Animation", "Skin", "WorldStats", "SearchStats",
+    "TrackStats",
     "IntersectionStats", "ThreadStats", "SafetyStats", "ScriptedDeviceRecord", "PatchSettings", "PatchStats",
     "Error", "InvalidArgument", "InvalidHandle", "InvalidMesh", "FileError", "ParseError", "Unsupported",
     "VersionMismatch", "WrongThread", "CapacityError", "InternalError", "Busy",

@@ -4,9 +4,10 @@ import math
 
 import numpy as np
 
-from ._core import CAPACITY, c_dtype, check, ffi, from_c, invalid, lib, pose_from_c, pose_to_c, real, snake
+from ._core import (CAPACITY, c_dtype, check, ffi, from_c, integer, invalid, lib, pose_from_c, pose_to_c, real,
+                    snake)
 from ._trace import haptic_trace
-from ._types import PATCH_FIELDS, IntersectionStats, MeshInfo, MeshStats, contact_dtype
+from ._types import PATCH_FIELDS, Animation, IntersectionStats, MeshInfo, MeshStats, RigInfo, Skin, contact_dtype
 
 
 def _key(id_value):
@@ -73,6 +74,74 @@ class Mesh:
             raise invalid(f"set_vertices: expected an (N, 3) array, got shape {v.shape}")
         check(lib.proxMesh_SetVertices(self._idp[0], ffi.from_buffer("double[]", v) if v.size else ffi.NULL,
                                        len(v)))
+
+    # ---- glTF skins, morph targets and animation (docs/dynamic-scenes.md) ----
+
+    @property
+    def rig(self):
+        """What the mesh's glTF rig holds (skins, joints, morph weights,
+        animations); zeros for a mesh without one."""
+        out = ffi.new("proxRigInfo*")
+        check(lib.proxMesh_GetRigInfo(self._idp[0], out))
+        return from_c(RigInfo, out[0])
+
+    @property
+    def skins(self):
+        """The glTF rig's skins, in the file's order: a list of Skin(name,
+        joints), joints the skin's joint count (what set_joint_matrices
+        takes); [] for none."""
+        info = ffi.new("proxSkinInfo*")
+        out = []
+        for s in range(self.rig.skin_count):
+            check(lib.proxMesh_GetSkinInfo(self._idp[0], s, info))
+            out.append(Skin(ffi.string(info.name).decode("utf-8", "replace"), info.jointCount))
+        return out
+
+    @property
+    def animations(self):
+        """The glTF scene's animations, in the file's order: a list of
+        Animation(name, duration, start, channels), duration the last
+        keyframe's time and start the first's, in seconds; [] for none."""
+        count = ffi.new("int32_t*")
+        check(lib.proxMesh_GetAnimationCount(self._idp[0], count))
+        info = ffi.new("proxAnimationInfo*")
+        out = []
+        for i in range(count[0]):
+            check(lib.proxMesh_GetAnimationInfo(self._idp[0], i, info))
+            out.append(Animation(ffi.string(info.name).decode("utf-8", "replace"), info.duration, info.start,
+                                 info.channelCount))
+        return out
+
+    def animate(self, index, seconds):
+        """Poses the mesh at animation ``index`` (of animations) at
+        ``seconds``: nodes, skins and morph weights; its vertices are
+        replaced, as set_vertices does. Drops joint matrices and morph
+        weights set before."""
+        check(lib.proxMesh_Animate(self._idp[0], integer(index, "animate: index"), real(seconds, "animate: seconds")))
+
+    def set_joint_matrices(self, skin, matrices):
+        """Your animation system drives skin ``skin``: its joints' world
+        matrices, (J, 4, 4) with m[row, column] (numpy's indexing; passed to
+        the C API column-major), affine, in the mesh's frame, J the skin's
+        joint count; Proxima applies the inverse bind matrices. Until the
+        next animate."""
+        m = np.asarray(matrices, dtype=np.float64)
+        if m.ndim != 3 or m.shape[1:] != (4, 4):
+            raise invalid(f"set_joint_matrices: expected a (J, 4, 4) array, got shape {m.shape}")
+        columns = np.ascontiguousarray(np.transpose(m, (0, 2, 1)))
+        check(lib.proxMesh_SetJointMatrices(self._idp[0], integer(skin, "set_joint_matrices: skin"),
+                                            ffi.from_buffer("double[]", columns) if columns.size else ffi.NULL,
+                                            len(columns)))
+
+    def set_morph_weights(self, weights):
+        """Every morphed mesh instance's weights, one after the other in
+        scene order (rig.morph_weight_count of them). Until the next
+        animate."""
+        w = np.ascontiguousarray(weights, dtype=np.float64)
+        if w.ndim != 1:
+            raise invalid(f"set_morph_weights: expected a 1-D array, got shape {w.shape}")
+        check(lib.proxMesh_SetMorphWeights(self._idp[0], ffi.from_buffer("double[]", w) if w.size else ffi.NULL,
+                                           len(w)))
 
     def destroy(self):
         """Destroys the mesh; refused while bodies use it."""

@@ -1,5 +1,7 @@
 """The package's dataclasses and dtypes, each derived from a struct of proxima.h."""
 
+import collections
+
 import numpy as np
 
 from ._core import c_dtype, check, enum_value, ffi, lib, make_dataclass, snake
@@ -13,6 +15,12 @@ ForceSettings = make_dataclass(
     defaults=_hard[0])
 MeshInfo = make_dataclass("proxMeshInfo", "MeshInfo", "Counts and bounds of a mesh (proxMeshInfo).")
 MeshStats = make_dataclass("proxMeshStats", "MeshStats", "A mesh's input counts and hierarchy (proxMeshStats).")
+RigInfo = make_dataclass("proxRigInfo", "RigInfo", "What a glTF mesh's rig holds (proxRigInfo).")
+# proxAnimationInfo, its name decoded (a char array has no dataclass field).
+Animation = collections.namedtuple("Animation", "name duration start channels")
+Animation.__doc__ = "A glTF animation of a mesh (proxAnimationInfo): duration and start in seconds."
+Skin = collections.namedtuple("Skin", "name joints")
+Skin.__doc__ = "A glTF skin of a mesh (proxSkinInfo): its name and joint count."
 WorldStats = make_dataclass("proxWorldStats", "WorldStats", "The last step's figures (proxWorldStats).")
 SearchStats = make_dataclass("proxSearchStats", "SearchStats",
                              "The last step's global searches (proxSearchStats).")

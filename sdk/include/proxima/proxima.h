@@ -251,6 +251,67 @@ PROX_API proxResult proxMesh_SetVertices(proxMeshId mesh, const double* position
  * NUL; PROX_ERROR_CAPACITY when it did not all fit. Game thread. */
 PROX_API proxResult proxMesh_GetWarnings(proxMeshId mesh, char* buffer, int32_t capacity, int32_t* length);
 
+/* ---- glTF skins, morph targets and animation ------------------------------
+ * A mesh loaded from a glTF scene with skins, morph targets or animations
+ * keeps its rig (docs/dynamic-scenes.md): loaded, it is posed at rest. The
+ * calls that pose it (Animate, SetJointMatrices, SetMorphWeights) replace
+ * its vertices as proxMesh_SetVertices does (same topology, the hierarchy
+ * refitted); where glTF vertices welded at rest move apart, the first in
+ * scene order places the vertex. All: game thread, also while the threads
+ * run, except (PROX_ERROR_BUSY) for a mesh a tool holds. A mesh without a
+ * rig has zero of everything; posing it is PROX_ERROR_INVALID_ARGUMENT. */
+typedef struct proxRigInfo {
+  int32_t skinCount;
+  int32_t jointCount;       /* over every skin */
+  int32_t morphWeightCount; /* what proxMesh_SetMorphWeights takes */
+  int32_t animationCount;
+} proxRigInfo;
+/* Game thread. */
+PROX_API proxResult proxMesh_GetRigInfo(proxMeshId mesh, proxRigInfo* info);
+
+typedef struct proxSkinInfo {
+  char name[64]; /* NUL-terminated, cut to 63 bytes; "" when the file names none */
+  int32_t jointCount;
+  int32_t reserved;
+} proxSkinInfo;
+/* Skin `skin` in [0, skinCount). Game thread. */
+PROX_API proxResult proxMesh_GetSkinInfo(proxMeshId mesh, int32_t skin, proxSkinInfo* info);
+
+/* The animations, in the file's order (0 for a mesh without a rig). Game thread. */
+PROX_API proxResult proxMesh_GetAnimationCount(proxMeshId mesh, int32_t* count);
+
+typedef struct proxAnimationInfo {
+  char name[64];   /* NUL-terminated, cut to 63 bytes; "animation N" when the file names none */
+  double duration; /* seconds: the last keyframe's time (glTF time starts at 0) */
+  double start;    /* seconds: the first keyframe's time */
+  int32_t channelCount;
+  int32_t reserved;
+} proxAnimationInfo;
+/* Animation `index` in [0, count). Game thread. */
+PROX_API proxResult proxMesh_GetAnimationInfo(proxMeshId mesh, int32_t index, proxAnimationInfo* info);
+
+/* The scene at `seconds` of animation `animation` (clamped to its keyframes:
+ * STEP, LINEAR with slerp for rotations, CUBICSPLINE): its nodes, skins
+ * (linear blend) and morph weights; joint matrices and morph weights set
+ * before are dropped. Game thread; while the threads run, PROX_ERROR_BUSY
+ * for a mesh a tool holds. */
+PROX_API proxResult proxMesh_Animate(proxMeshId mesh, int32_t animation, double seconds);
+
+/* Your engine's animation system drives the skin: `count` (the skin's joint
+ * count) JOINT WORLD matrices, 16 doubles each, column-major (element
+ * 4 * column + row, translation in 12, 13, 14), affine, in the mesh's own
+ * frame (the glTF scene root), in the skin's joint order. Proxima multiplies
+ * each by the joint's inverse bind matrix from the file. They stand for the
+ * joints' nodes until the next proxMesh_Animate. Game thread; as
+ * proxMesh_Animate while the threads run. */
+PROX_API proxResult proxMesh_SetJointMatrices(proxMeshId mesh, int32_t skin, const double* matrices,
+                                              int32_t count);
+
+/* Every morphed mesh instance's weights, one after the other in scene order
+ * (count: proxRigInfo.morphWeightCount), until the next proxMesh_Animate.
+ * Game thread; as proxMesh_Animate while the threads run. */
+PROX_API proxResult proxMesh_SetMorphWeights(proxMeshId mesh, const double* weights, int32_t count);
+
 /* ---- bodies ---------------------------------------------------------------- */
 
 typedef enum proxBodyType {

@@ -1,5 +1,6 @@
 // Meshes: from arrays, files or files' bytes in memory (OBJ, glTF), their information.
 #include "capi/common.h"
+#include "capi/rig.h"
 
 #include "io/obj.h"
 #if PROX_WITH_GLTF
@@ -100,6 +101,7 @@ proxMeshId load_mesh(proxWorldId world, runtime::World& w, const std::string& na
                                    {m.positions.data(), static_cast<uint32_t>(m.positions.size() / 3),
                                     m.indices.data(), static_cast<uint32_t>(m.indices.size() / 3)},
                                    name);
+    if (m.rig) attach_rig(w, id, m.rig);
     keep_warnings(id, warnings);
     return id;
   }

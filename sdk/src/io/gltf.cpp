@@ -2,6 +2,10 @@
 
 #include "io/file.h"
 #include "io/gltf_precheck.h"
+// These include tinygltf's declarations; the implementation, below, is
+// then included once (its part after the header guard is not guarded).
+#include "io/gltf_accessor.h"
+#include "io/gltf_rig.h"
 
 // tinygltf is compiled here and nowhere else, without any image support: no
 // stb_image, external images are not even opened, embedded ones go to a no-op
@@ -37,12 +41,17 @@
 namespace prox::io {
 namespace {
 
+using gltf_detail::AccessorReader;
+using gltf_detail::AccessorUse;
 using gltf_detail::check_glb;
+using gltf_detail::component_size;
+using gltf_detail::component_type_name;
 using gltf_detail::GlbLayout;
+using gltf_detail::kMaxU32;
+using gltf_detail::LocalMesh;
+using gltf_detail::MeshInstance;
 using gltf_detail::precheck_json;
-using gltf_detail::read_u32le;
-
-constexpr std::uint64_t kMaxU32 = 0xFFFFFFFFu;
+using gltf_detail::type_name;
 
 // ---------------------------------------------------------------------------
 // Files
@@ -86,116 +95,12 @@ std::string trim(std::string s) {
 }
 
 // ---------------------------------------------------------------------------
-// Accessors
-
-const char* component_type_name(int type) {
-  switch (type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-      return "BYTE";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-      return "UNSIGNED_BYTE";
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-      return "SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-      return "UNSIGNED_SHORT";
-    case TINYGLTF_COMPONENT_TYPE_INT:
-      return "INT (not a glTF 2.0 type)";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-      return "UNSIGNED_INT";
-    case TINYGLTF_COMPONENT_TYPE_FLOAT:
-      return "FLOAT";
-    case TINYGLTF_COMPONENT_TYPE_DOUBLE:
-      return "DOUBLE (not a glTF 2.0 type)";
-    default:
-      return "an unknown component type";
-  }
-}
-
-const char* type_name(int type) {
-  switch (type) {
-    case TINYGLTF_TYPE_SCALAR:
-      return "SCALAR";
-    case TINYGLTF_TYPE_VEC2:
-      return "VEC2";
-    case TINYGLTF_TYPE_VEC3:
-      return "VEC3";
-    case TINYGLTF_TYPE_VEC4:
-      return "VEC4";
-    case TINYGLTF_TYPE_MAT2:
-      return "MAT2";
-    case TINYGLTF_TYPE_MAT3:
-      return "MAT3";
-    case TINYGLTF_TYPE_MAT4:
-      return "MAT4";
-    default:
-      return "an unknown type";
-  }
-}
-
-std::size_t component_size(int type) {
-  switch (type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-      return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-      return 2;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT:
-      return 4;
-    default:
-      return 0;
-  }
-}
-
-// One little-endian component; normalized integers map to [-1, 1] or [0, 1]
-// by the glTF 2.0 formulas (signed: max(c / (2^(n-1) - 1), -1)).
-double read_component(const unsigned char* p, int type, bool normalized) {
-  switch (type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: {
-      const double c = static_cast<std::int8_t>(p[0]);
-      return normalized ? std::max(c / 127.0, -1.0) : c;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-      const double c = p[0];
-      return normalized ? c / 255.0 : c;
-    }
-    case TINYGLTF_COMPONENT_TYPE_SHORT: {
-      const double c = static_cast<std::int16_t>(static_cast<std::uint16_t>(p[0] | p[1] << 8));
-      return normalized ? std::max(c / 32767.0, -1.0) : c;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-      const double c = static_cast<std::uint16_t>(p[0] | p[1] << 8);
-      return normalized ? c / 65535.0 : c;
-    }
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-      return read_u32le(p);
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-      const std::uint32_t bits = read_u32le(p);
-      float f;
-      std::memcpy(&f, &bits, sizeof f);
-      return static_cast<double>(f);
-    }
-    default:
-      return 0.0;
-  }
-}
-
-enum class AccessorUse { Position, Index };
-
-// ---------------------------------------------------------------------------
 // The scene
-
-struct LocalMesh {  // one mesh's triangles in its own coordinates
-  bool decoded = false;
-  std::vector<glm::dvec3> positions;
-  std::vector<std::uint32_t> indices;
-};
 
 class Decoder {
  public:
   Decoder(const tinygltf::Model& model, const std::string& name, std::vector<std::string>* warnings)
-      : model_(model), name_(name), warnings_(warnings) {}
+      : model_(model), name_(name), warnings_(warnings), reader_(model, name) {}
 
   Status run(GltfSceneMode mode, const std::string& stem, std::vector<GltfMesh>& out) {
     std::vector<int> roots;
@@ -253,7 +158,7 @@ class Decoder {
       return {StatusCode::Unsupported,
               name_ + ": the scene has no triangles (point and line primitives are not read)"};
     }
-    return Status::ok();
+    return gltf_detail::has_rig(model_, instances_) ? pose_at_rest(mode, out) : Status::ok();
   }
 
  private:
@@ -367,6 +272,8 @@ class Decoder {
     }
     GltfMesh& target = out.back();
     const std::size_t base = target.positions.size() / 3;
+    instances_.push_back({index, node.mesh, static_cast<std::uint32_t>(flat_vertices_)});
+    flat_vertices_ += mesh.positions.size();
     if (base == 0) {  // a fresh soup (per node); merged ones grow geometrically
       target.positions.reserve(3 * mesh.positions.size());
       target.indices.reserve(mesh.indices.size());
@@ -385,18 +292,40 @@ class Decoder {
     return Status::ok();
   }
 
-  // Every triangle primitive of a mesh, in the mesh's coordinates.
-  //
-  // Skinned meshes are taken as authored (their bind-pose coordinates) and
-  // placed by their node's transform like any other mesh; joints, weights,
-  // inverse bind matrices, morph targets and animations are not read. This is
-  // not glTF's rest pose: glTF ignores a skinned mesh node's transform and
-  // places the vertices by joint world matrix x inverse bind matrix. The two
-  // agree when the inverse bind matrices were made from the mesh node's world
-  // transform; in RiggedSimple.glb they differ by the Armature node's quarter
-  // turn about the cylinder's axis. A skinned mesh quantized by
+  // A file with skins, morph targets or animations: its rig (gltf_rig.cpp)
+  // poses the vertices at rest, replacing the node-transformed ones above.
+  // That differs for skinned meshes (glTF ignores their node's transform and
+  // places them by joint world x inverse bind matrix) and morphed ones (their
+  // default weights). Merged: the soup keeps the rig.
+  Status pose_at_rest(GltfSceneMode mode, std::vector<GltfMesh>& out) {
+    if (flat_vertices_ > kMaxU32)
+      return {StatusCode::Unsupported, name_ + ": a rigged scene has more than 4294967295 vertices"};
+    std::shared_ptr<rig::Rig> rig;
+    Status status = gltf_detail::read_rig(model_, name_, meshes_, instances_, warnings_, rig);
+    if (!status) return status;
+    std::vector<Vec3> rest;
+    rig->positions(rig->rest_pose(), {}, rest);
+    for (std::size_t i = 0; i < rig->instances.size(); ++i) {
+      const rig::Instance& in = rig->instances[i];
+      GltfMesh& target = out[mode == GltfSceneMode::Merged ? 0 : i];
+      const std::size_t base = mode == GltfSceneMode::Merged ? in.first_vertex : 0;
+      const std::size_t count = rig->meshes[in.mesh].positions.size();
+      for (std::size_t v = 0; v < count; ++v) {
+        const Vec3& p = rest[in.first_vertex + v];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+          return error("node " + std::to_string(in.node) +
+                       ": a vertex of its mesh overflows to infinity at rest");
+        std::copy(&p.x, &p.x + 3, target.positions.begin() + static_cast<std::ptrdiff_t>(3 * (base + v)));
+      }
+    }
+    if (mode == GltfSceneMode::Merged) out[0].rig = std::move(rig);
+    return Status::ok();
+  }
+
+  // Every triangle primitive of a mesh, in the mesh's coordinates, with
+  // each primitive's vertex range (for the rig). A skinned mesh quantized by
   // KHR_mesh_quantization keeps its dequantization in the inverse bind
-  // matrices, so it comes out in quantized units.
+  // matrices; it comes out right only through the rig.
   Status decode_mesh(int mesh_index, LocalMesh& mesh) {
     const tinygltf::Mesh& source = model_.meshes[static_cast<std::size_t>(mesh_index)];
     // POSITION accessor -> (its first vertex in `mesh`, its vertex count).
@@ -423,7 +352,7 @@ class Decoder {
       auto found = position_base.find(position->second);
       if (found == position_base.end()) {
         const Status status =
-            read_accessor(position->second, where + ": POSITION", AccessorUse::Position, values);
+            reader_.read(position->second, where + ": POSITION", AccessorUse::Position, values);
         if (!status) return status;
         const std::size_t count = values.size() / 3;
         if (mesh.positions.size() + count > kMaxU32)
@@ -444,11 +373,12 @@ class Decoder {
       }
       const std::uint32_t base = found->second.first;
       const std::size_t vertex_count = found->second.second;
+      mesh.primitives.push_back({static_cast<int>(p), base, static_cast<std::uint32_t>(vertex_count)});
 
       vertex.clear();
       if (primitive.indices != -1) {
         const Status status =
-            read_accessor(primitive.indices, where + ": indices", AccessorUse::Index, values);
+            reader_.read(primitive.indices, where + ": indices", AccessorUse::Index, values);
         if (!status) return status;
         vertex.reserve(values.size());
         for (std::size_t k = 0; k < values.size(); ++k) {
@@ -491,162 +421,6 @@ class Decoder {
     return Status::ok();
   }
 
-  // A view's bytes, checked to lie inside its buffer.
-  Status buffer_view(int index, const std::string& where, const unsigned char*& data,
-                     std::size_t& length) const {
-    if (index < 0 || static_cast<std::size_t>(index) >= model_.bufferViews.size())
-      return error(where + ": bufferView " + std::to_string(index) + " does not exist (the file has " +
-                   std::to_string(model_.bufferViews.size()) + ")");
-    const tinygltf::BufferView& view = model_.bufferViews[static_cast<std::size_t>(index)];
-    if (view.buffer < 0 || static_cast<std::size_t>(view.buffer) >= model_.buffers.size())
-      return error(where + ": bufferView " + std::to_string(index) + " refers to buffer " +
-                   std::to_string(view.buffer) + ", which does not exist");
-    const std::vector<unsigned char>& buffer = model_.buffers[static_cast<std::size_t>(view.buffer)].data;
-    if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset)
-      return error(where + ": bufferView " + std::to_string(index) + " (byteOffset " +
-                   std::to_string(view.byteOffset) + ", byteLength " + std::to_string(view.byteLength) +
-                   ") runs past the end of buffer " + std::to_string(view.buffer) + " (" +
-                   std::to_string(buffer.size()) + " bytes)");
-    data = buffer.data() + view.byteOffset;
-    length = view.byteLength;
-    return Status::ok();
-  }
-
-  // `count` elements of `element` bytes, `stride` apart from `offset`, must
-  // lie within `length` bytes: offset + (count - 1) * stride + element.
-  Status check_span(std::uint64_t offset, std::uint64_t count, std::uint64_t stride, std::uint64_t element,
-                    std::uint64_t length, const std::string& what) const {
-    if (count == 0) return Status::ok();
-    if (offset > length || element > length - offset || count - 1 > (length - offset - element) / stride)
-      return error(what + ": " + std::to_string(count) + " elements of " + std::to_string(element) +
-                   " bytes, " + std::to_string(stride) + " apart from byteOffset " + std::to_string(offset) +
-                   ", run past the end of the bufferView (" + std::to_string(length) + " bytes)");
-    return Status::ok();
-  }
-
-  // Accessor `index` as count * components doubles: the base bufferView (or
-  // zeros without one), then the sparse substitutions.
-  Status read_accessor(int index, const std::string& where, AccessorUse use, std::vector<double>& out) const {
-    out.clear();
-    const char* role = use == AccessorUse::Position ? "POSITION" : "indices";
-    if (index < 0 || static_cast<std::size_t>(index) >= model_.accessors.size())
-      return error(where + ": accessor " + std::to_string(index) + " does not exist (the file has " +
-                   std::to_string(model_.accessors.size()) + ")");
-    const tinygltf::Accessor& accessor = model_.accessors[static_cast<std::size_t>(index)];
-    const std::string what = where + " accessor " + std::to_string(index);
-    const int ct = accessor.componentType;
-
-    std::size_t components = 0;
-    bool type_ok = false;
-    if (use == AccessorUse::Position) {
-      components = 3;
-      // Float, or (KHR_mesh_quantization) 8- and 16-bit integers, normalized
-      // or not. Accepted whether or not the file declares the extension: the
-      // values are unambiguous. The extension does not allow UNSIGNED_INT.
-      type_ok = accessor.type == TINYGLTF_TYPE_VEC3 &&
-                (ct == TINYGLTF_COMPONENT_TYPE_FLOAT || ct == TINYGLTF_COMPONENT_TYPE_BYTE ||
-                 ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || ct == TINYGLTF_COMPONENT_TYPE_SHORT ||
-                 ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) &&
-                !(accessor.normalized && ct == TINYGLTF_COMPONENT_TYPE_FLOAT);
-    } else {
-      components = 1;
-      type_ok =
-          accessor.type == TINYGLTF_TYPE_SCALAR &&
-          (ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ||
-           ct == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) &&
-          !accessor.normalized;
-    }
-    if (!type_ok)
-      return error(what + ": " + type_name(accessor.type) + " of " +
-                   std::string(accessor.normalized ? "normalized " : "") + component_type_name(ct) +
-                   " is not a valid type for " + role +
-                   (use == AccessorUse::Position
-                        ? " (VEC3 of FLOAT, or of BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT with "
-                          "KHR_mesh_quantization)"
-                        : " (SCALAR of UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT)"));
-    const std::size_t size = component_size(ct);
-    const std::size_t element = size * components;
-    const std::uint64_t count = accessor.count;
-    if (use == AccessorUse::Position && count > kMaxU32)
-      return {StatusCode::Unsupported, name_ + ": " + what + ": more than 4294967295 vertices"};
-    if (accessor.bufferView == -1 && !accessor.sparse.isSparse && count > 0)
-      return error(what + ": has neither a bufferView nor sparse values");
-
-    const unsigned char* first = nullptr;
-    std::size_t stride = element;
-    if (accessor.bufferView != -1) {
-      const unsigned char* data = nullptr;
-      std::size_t length = 0;
-      Status status = buffer_view(accessor.bufferView, what, data, length);
-      if (!status) return status;
-      const std::size_t view_stride =
-          model_.bufferViews[static_cast<std::size_t>(accessor.bufferView)].byteStride;
-      if (view_stride != 0 && view_stride < element)
-        return error(what + ": bufferView " + std::to_string(accessor.bufferView) + " has byteStride " +
-                     std::to_string(view_stride) + ", less than the " + std::to_string(element) +
-                     "-byte element");
-      if (view_stride != 0) stride = view_stride;
-      status = check_span(accessor.byteOffset, count, stride, element, length, what);
-      if (!status) return status;
-      first = data + accessor.byteOffset;
-    }
-    out.assign(static_cast<std::size_t>(count) * components, 0.0);  // glTF: no bufferView means zeros
-    if (first != nullptr) {
-      for (std::size_t i = 0; i < count; ++i)
-        for (std::size_t c = 0; c < components; ++c)
-          out[i * components + c] = read_component(first + i * stride + c * size, ct, accessor.normalized);
-    }
-
-    if (accessor.sparse.isSparse) {
-      const auto& sparse = accessor.sparse;
-      const std::string sparse_what = what + " (sparse)";
-      if (sparse.count < 1 || static_cast<std::uint64_t>(sparse.count) > count)
-        return error(sparse_what + ": count " + std::to_string(sparse.count) + " is not in [1, " +
-                     std::to_string(count) + "]");
-      const int index_type = sparse.indices.componentType;
-      if (index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-          index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-          index_type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-        return error(sparse_what + ": indices of " + component_type_name(index_type) +
-                     " (UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT are allowed)");
-      if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0)
-        return error(sparse_what + ": negative byteOffset");
-      const std::size_t n = static_cast<std::size_t>(sparse.count);
-      const std::size_t index_size = component_size(index_type);
-      const unsigned char* indices = nullptr;
-      const unsigned char* values = nullptr;
-      std::size_t length = 0;
-      // Both are tightly packed (glTF forbids a byteStride on these views).
-      Status status = buffer_view(sparse.indices.bufferView, sparse_what + " indices", indices, length);
-      if (status)
-        status = check_span(static_cast<std::uint64_t>(sparse.indices.byteOffset), n, index_size, index_size,
-                            length, sparse_what + " indices");
-      if (status) status = buffer_view(sparse.values.bufferView, sparse_what + " values", values, length);
-      if (status)
-        status = check_span(static_cast<std::uint64_t>(sparse.values.byteOffset), n, element, element, length,
-                            sparse_what + " values");
-      if (!status) return status;
-      indices += sparse.indices.byteOffset;
-      values += sparse.values.byteOffset;
-      std::uint64_t previous = 0;
-      for (std::size_t k = 0; k < n; ++k) {
-        const auto target =
-            static_cast<std::uint64_t>(read_component(indices + k * index_size, index_type, false));
-        if (target >= count)
-          return error(sparse_what + ": index " + std::to_string(target) + " (entry " + std::to_string(k) +
-                       ") is past the accessor's " + std::to_string(count) + " elements");
-        if (k > 0 && target <= previous)
-          return error(sparse_what + ": indices are not strictly increasing (" + std::to_string(previous) +
-                       " then " + std::to_string(target) + ")");
-        previous = target;
-        for (std::size_t c = 0; c < components; ++c)
-          out[target * components + c] =
-              read_component(values + k * element + c * size, ct, accessor.normalized);
-      }
-    }
-    return Status::ok();
-  }
-
   // An attribute Proxima does not read (NORMAL, TEXCOORD_0, ...): one that is
   // invalid is skipped, not an error, and reported once per accessor.
   void check_unused(const std::string& attribute, int index, const std::string& where) {
@@ -666,7 +440,7 @@ class Decoder {
         const std::size_t element = size * static_cast<std::size_t>(components);
         const unsigned char* data = nullptr;
         std::size_t length = 0;
-        status = buffer_view(accessor.bufferView, what, data, length);
+        status = reader_.buffer_view(accessor.bufferView, what, data, length);
         if (status) {
           const std::size_t view_stride =
               model_.bufferViews[static_cast<std::size_t>(accessor.bufferView)].byteStride;
@@ -674,8 +448,8 @@ class Decoder {
             status = error(what + ": byteStride " + std::to_string(view_stride) + " is less than the " +
                            std::to_string(element) + "-byte element");
           else
-            status = check_span(accessor.byteOffset, accessor.count, view_stride != 0 ? view_stride : element,
-                                element, length, what);
+            status = reader_.check_span(accessor.byteOffset, accessor.count,
+                                        view_stride != 0 ? view_stride : element, element, length, what);
         }
       }
     }
@@ -686,8 +460,11 @@ class Decoder {
   const tinygltf::Model& model_;
   const std::string& name_;
   std::vector<std::string>* warnings_;
+  AccessorReader reader_;
   std::set<int> warned_;
   std::vector<LocalMesh> meshes_;
+  std::vector<MeshInstance> instances_;  // in `out`'s order, for the rig
+  std::uint64_t flat_vertices_ = 0;      // over every instance (the merged soup's count)
 };
 
 // `path` names the file in messages and gives its extension, stem and the

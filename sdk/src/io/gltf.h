@@ -4,8 +4,10 @@
 #pragma once
 
 #include "common/status.h"
+#include "mesh/rig.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,9 @@ struct GltfMesh {
   std::string name;  // node name (else mesh name, else "node N") for PerNode; file stem for Merged
   std::vector<double> positions;       // x, y, z per vertex
   std::vector<std::uint32_t> indices;  // three per triangle, 0-based into positions
+  // Merged, for a file with skins, morph targets or animations: the scene's
+  // rig; `positions` are its input vertices at rest (mesh/rig.h).
+  std::shared_ptr<const rig::Rig> rig;
 };
 
 struct GltfLoadOptions {
@@ -40,9 +45,13 @@ struct GltfLoadOptions {
 // - POSITION only: float, or the integer types of KHR_mesh_quantization
 //   (normalized or not), with byteStride, byteOffset and sparse accessors;
 // - node matrices and translation/rotation/scale;
-// - skinned meshes in their authored (bind) coordinates under their node's
-//   transform, not posed by their joints (see decode_mesh in gltf.cpp);
-//   morph targets and animations are ignored.
+// - skins (JOINTS_n, WEIGHTS_n, inverse bind matrices), morph targets
+//   (POSITION deltas, default weights from node.weights or mesh.weights) and
+//   animations, into GltfMesh::rig (gltf_rig.h); the vertices are posed at
+//   rest: a skinned mesh by its joints at their nodes' own transforms (its
+//   node's transform ignored, as glTF requires), a morphed one by its default
+//   weights. glTF's MUST rules on skins are checked; float weights not summing
+//   to 1 are normalized with a warning.
 // Images are never read or decoded.
 //
 // Errors name the file and the offending part ("mesh 3 'Gear' primitive 0:
@@ -54,10 +63,11 @@ struct GltfLoadOptions {
 // references or bytes, index values past the vertex count, non-finite
 // positions). `out` is empty after an error.
 //
-// `warnings`, when given, receives what was skipped: attributes Proxima does
-// not read (NORMAL, TEXCOORD_0, ...) of the primitives it reads, when they are
-// invalid (an accessor running past its bufferView, say), one message each
-// naming the file, mesh, primitive and accessor.
+// `warnings`, when given, receives what was skipped or mended: attributes
+// Proxima does not read (NORMAL, TEXCOORD_0, ...) of the primitives it reads,
+// when they are invalid (an accessor running past its bufferView, say), and
+// float skin weights normalized, one message each naming the file, mesh,
+// primitive and accessor.
 Status load_gltf(const std::string& path, const GltfLoadOptions& options, std::vector<GltfMesh>& out,
                  std::vector<std::string>* warnings = nullptr);
 // The same, from the file's bytes already in memory; `path` is used in

@@ -210,6 +210,9 @@ Mesh Mesh::build(const MeshInput& in, Status& status) {
   }
   for (auto& tri : mesh.triangles_)
     for (std::uint32_t& w : tri) w = final_of[w];
+  mesh.input_vertex_.resize(in.vertex_count);
+  for (std::uint32_t v = 0; v < in.vertex_count; ++v)
+    mesh.input_vertex_[v] = welded_of[v] == kNone ? kNoVertex : final_of[welded_of[v]];
 
   const std::uint32_t vertex_count = mesh.vertex_count();
   const std::uint32_t triangle_count = mesh.triangle_count();

@@ -11,6 +11,7 @@
 namespace prox {
 
 inline constexpr std::uint32_t kNoTriangle = 0xFFFFFFFFu;
+inline constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;
 
 struct Aabb {
   Vec3 min{0.0}, max{0.0};
@@ -67,6 +68,13 @@ class Mesh {
   }
   // The input triangle this triangle came from (dropped ones leave gaps).
   std::uint32_t input_triangle(std::uint32_t t) const { return input_triangle_[t]; }
+  // The vertex input vertex `input` was welded into, or kNoVertex when no
+  // kept triangle uses it. Several input vertices share one when they had
+  // the same position (a glTF UV seam); a deformation that moves them apart
+  // later keeps the mesh's topology, so one of them must speak for the
+  // vertex: the rig (mesh/rig.h) takes the first in input order.
+  std::uint32_t welded_vertex(std::uint32_t input) const { return input_vertex_[input]; }
+  std::uint32_t input_vertex_count() const { return static_cast<std::uint32_t>(input_vertex_.size()); }
 
   // Unit face normal; zero for a zero-area triangle.
   const Vec3& face_normal(std::uint32_t t) const { return face_normals_[t]; }
@@ -107,6 +115,7 @@ class Mesh {
   std::vector<Vec3> vertices_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;
   std::vector<std::uint32_t> input_triangle_;
+  std::vector<std::uint32_t> input_vertex_;  // input vertex -> vertex, or kNoVertex
   std::vector<Vec3> face_normals_;
   std::vector<Vec3> vertex_normals_;
   // CSR adjacency: vertex -> triangles.

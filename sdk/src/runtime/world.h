@@ -8,6 +8,7 @@
 #include "coupling/proxy.h"
 #include "runtime/body_tree.h"
 #include "runtime/device.h"
+#include "runtime/mesh_rig.h"
 #include "runtime/scene.h"
 #include "runtime/scripted_device.h"
 #include "runtime/stream_device.h"
@@ -142,6 +143,13 @@ class World {
   bool set_vertices(Handle mesh, const std::vector<Vec3>& positions, Status& status);
   // Whether a tool's body uses the mesh.
   bool mesh_held_by_tool(Handle mesh) const;
+
+  // glTF rigs (runtime/mesh_rig.h, docs/dynamic-scenes.md): the rig a mesh
+  // was loaded with, whose input vertices must be the mesh's, and the game
+  // thread's pose of it; nullptr for a mesh without one. Game thread.
+  bool set_rig(Handle mesh, std::shared_ptr<const rig::Rig> rig, Status& status);
+  const MeshRig* rig(Handle mesh) const;
+  MeshRig* rig(Handle mesh);
 
   // Bodies.
   Handle create_body(Handle mesh, BodyType type, const Pose& pose, const Vec3& reference_point,
@@ -310,6 +318,8 @@ class World {
   std::vector<MeshSlot> meshes_;
   std::vector<BodySlot> bodies_;
   PairMap pairs_;
+  // glTF rigs, by mesh slot (rigged meshes only).
+  std::unordered_map<std::uint32_t, MeshRig> rigs_;
   Broadphase broadphase_;  // the deterministic step's
   // Moves with every change the broadphase must see: bodies created or
   // destroyed, static and movable bodies moved (tools move every step and

@@ -65,6 +65,7 @@ bool World::destroy_mesh(Handle h, Status& status) {
   if (running()) lock.lock();
   slot.alive = false;
   gone = std::move(slot.data);
+  rigs_.erase(h.index);
   return true;
 }
 

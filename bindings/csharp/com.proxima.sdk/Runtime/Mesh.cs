@@ -68,6 +68,65 @@ namespace Proxima
             Native.Check(Native.proxMesh_SetVertices(id, positions, (uint)(positions.Length / 3)));
         }
 
+        // ---- glTF skins, morph targets and animation (docs/dynamic-scenes.md) ----
+
+        /// <summary>What the mesh's glTF rig holds; zeros for a mesh without one.</summary>
+        public RigInfo Rig
+        {
+            get { Native.Check(Native.proxMesh_GetRigInfo(id, out RigInfo info)); return info; }
+        }
+
+        /// <summary>The rig's skins, in the file's order (their joint counts are what
+        /// SetJointMatrices takes); empty for none.</summary>
+        public SkinInfo[] Skins
+        {
+            get
+            {
+                var skins = new SkinInfo[Rig.SkinCount];
+                for (int s = 0; s < skins.Length; ++s) Native.Check(Native.proxMesh_GetSkinInfo(id, s, out skins[s]));
+                return skins;
+            }
+        }
+
+        /// <summary>The glTF scene's animations, in the file's order; empty for none.</summary>
+        public AnimationInfo[] Animations
+        {
+            get
+            {
+                Native.Check(Native.proxMesh_GetAnimationCount(id, out int count));
+                var animations = new AnimationInfo[count];
+                for (int a = 0; a < count; ++a) Native.Check(Native.proxMesh_GetAnimationInfo(id, a, out animations[a]));
+                return animations;
+            }
+        }
+
+        /// <summary>Poses the mesh at animation `animation` (an index of Animations) at `seconds`:
+        /// nodes, skins and morph weights; its vertices are replaced, as SetVertices does.
+        /// Drops joint matrices and morph weights set before. Game thread.</summary>
+        public void Animate(int animation, double seconds) =>
+            Native.Check(Native.proxMesh_Animate(id, animation, seconds));
+
+        /// <summary>Your animation system drives skin `skin`: its joints' WORLD matrices, 16 doubles
+        /// each, column-major (element 4 * column + row; translation in 12, 13, 14), affine, in the
+        /// mesh's frame, one per joint in the skin's order; Proxima applies the file's inverse bind
+        /// matrices. Until the next Animate. Game thread.</summary>
+        public void SetJointMatrices(int skin, double[] matrices)
+        {
+            if (matrices == null) throw new ArgumentNullException(nameof(matrices));
+            if (matrices.Length % 16 != 0)
+                throw new ArgumentException("matrices holds 16 doubles per joint: its length " + matrices.Length +
+                                            " is not a multiple of 16", nameof(matrices));
+            Native.Check(Native.proxMesh_SetJointMatrices(id, skin, matrices, matrices.Length / 16));
+        }
+
+        /// <summary>Every morphed mesh instance's weights, one after the other in scene order
+        /// (Rig.MorphWeightCount of them). Until the next Animate. Game thread.</summary>
+        public void SetMorphWeights(double[] weights)
+        {
+            if (weights == null) throw new ArgumentNullException(nameof(weights));
+            Native.Check(Native.proxMesh_SetMorphWeights(id, weights, weights.Length));
+        }
+
         /// <summary>Fails while bodies use the mesh.</summary>
         public void Destroy() => Native.Check(Native.proxMesh_Destroy(id));
 

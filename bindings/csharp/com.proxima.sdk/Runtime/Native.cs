@@ -165,6 +165,28 @@ namespace Proxima
                                                             uint triangleCapacity, out uint triangleCount);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxMesh_SetVertices(MeshId mesh, double[] positions, uint vertexCount);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxMesh_GetRigInfo(MeshId mesh, out RigInfo info);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxMesh_GetSkinInfo(MeshId mesh, int skin, out SkinInfo info);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxMesh_GetAnimationCount(MeshId mesh, out int count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxMesh_GetAnimationInfo(MeshId mesh, int index, out AnimationInfo info);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxMesh_Animate(MeshId mesh, int animation, double seconds);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxMesh_SetJointMatrices(MeshId mesh, int skin, double[] matrices, int count);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxMesh_SetMorphWeights(MeshId mesh, double[] weights, int count);
+
+        /// <summary>A NUL-terminated UTF-8 char array of a C struct, as a string.</summary>
+        internal static string CString(byte[] bytes)
+        {
+            if (bytes == null) return "";
+            int length = Array.IndexOf(bytes, (byte)0);
+            return System.Text.Encoding.UTF8.GetString(bytes, 0, length < 0 ? bytes.Length : length);
+        }
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern BodyDef proxDefaultBodyDef();

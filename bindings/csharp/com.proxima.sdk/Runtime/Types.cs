@@ -205,6 +205,41 @@ namespace Proxima
         public Vec3 BoundsMin, BoundsMax; // in the mesh's own frame
     }
 
+    /// <summary>proxRigInfo: what a glTF mesh's rig holds (docs/dynamic-scenes.md); zeros for a mesh
+    /// without one.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct RigInfo
+    {
+        public int SkinCount;
+        public int JointCount;       // over every skin
+        public int MorphWeightCount; // what Mesh.SetMorphWeights takes
+        public int AnimationCount;
+    }
+
+    /// <summary>proxSkinInfo: one skin of a glTF mesh.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct SkinInfo
+    {
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 64)] internal byte[] name;
+        public int JointCount;
+        int reserved;
+        /// <summary>The skin's name in the file; "" when it has none.</summary>
+        public string Name => Native.CString(name);
+    }
+
+    /// <summary>proxAnimationInfo: one animation of a glTF mesh, times in seconds.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct AnimationInfo
+    {
+        [MarshalAs(UnmanagedType.ByValArray, SizeConst = 64)] internal byte[] name;
+        public double Duration;  // the last keyframe's time (glTF time starts at 0)
+        public double Start;     // the first keyframe's time
+        public int ChannelCount;
+        int reserved;
+        /// <summary>The animation's name in the file, else "animation N".</summary>
+        public string Name => Native.CString(name);
+    }
+
     /// <summary>proxContact: one local minimum distance pair of a tool.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct Contact
