@@ -47,7 +47,7 @@ def main():
     # Every public C function has its P/Invoke declaration (Native.cs).
     # proxima.h and the parts it includes (the HID and OpenXR headers are not bound yet).
     api = "".join(open(os.path.join(root, "sdk", "include", "proxima", h)).read()
-                  for h in ("proxima.h", "threads.h", "inspect.h"))
+                  for h in ("proxima.h", "devices.h", "threads.h", "inspect.h"))
     c_functions = set(re.findall(r"^PROX_API\s[^;]*?\b(prox\w+)\s*\(", api, re.M | re.S))
     native = open(os.path.join(pkg, "Runtime", "Native.cs")).read()
     declared = set(re.findall(r"static extern \w+ (prox\w+)\(", native))
