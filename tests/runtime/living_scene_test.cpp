@@ -99,6 +99,40 @@ TEST_F(LivingScene, ADeformationIsTrackedWithoutAGlobalSearch) {
   expect_safe_output();
 }
 
+// The held tool itself swells 0.3 mm towards the wall (in its own frame)
+// while the global search is stalled: its contacts are tracked on its new
+// shape, to the distance the deterministic method measures there.
+TEST_F(LivingScene, AHeldToolDeformsUnderTheHand) {
+  FaultyDevice* device = nullptr;
+  start_and_settle(device);
+  const Vec3 towards_wall = -0.0003 * glm::normalize(expected_wrench_.force);
+  const Vec3 local = glm::transpose(near_.rotation) * towards_wall;
+  // Moving every vertex by `local` in the tool's frame is the tool moved by
+  // `towards_wall` in the world's.
+  ProximityResult expected;
+  PairState state;
+  const Pose moved{near_.rotation, near_.translation + towards_wall};
+  find_lmds(make_query(*bunny_, Pose{}, *bunny_, moved, world_settings_.cutoff), Method::Precise, state, expected);
+  ASSERT_FALSE(expected.lmds.empty());
+  double closest = kNoContact;
+  for (const LmdPair& p : expected.lmds) closest = std::min(closest, p.distance);
+  ASSERT_LT(closest, closest_contact() - 1e-4);
+
+  world_->threads()->stall(Role::Global, true);
+  const std::vector<double> xyz = wall_moved(local);  // the bunny's vertices, moved
+  Status status;
+  ASSERT_TRUE(world_->set_vertices(tool_mesh_, xyz.data(), bunny_->mesh.vertex_count(), status))
+      << status.message();
+  EXPECT_TRUE(wait_until([&] { return std::abs(closest_contact() - closest) <= 1e-9 * closest; }))
+      << "closest contact " << closest_contact() << " m, the deformed tool's " << closest << " m";
+  world_->threads()->stall(Role::Global, false);
+  const Wrench w = tool_wrench(world_settings_.force, expected.lmds, moved.apply(bunny_->centre));
+  EXPECT_TRUE(wait_until([&] {
+    return length(world_->wrench(tool_).force - w.force) <= 1e-9 * length(w.force);
+  })) << "the threads never reached the deformed tool's force";
+  expect_safe_output();
+}
+
 // The wall destroyed under the held tool: its contacts leave, and the force
 // fades to zero without the safety gate having to limit it. Made again, it
 // is found and the force returns.

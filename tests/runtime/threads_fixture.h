@@ -126,6 +126,7 @@ class ThreadsTest : public ::testing::Test {
     ASSERT_TRUE(status) << status.message();
     wall_ = world_->create_body(wall_mesh_, BodyType::Static, Pose{}, Vec3(0.0));
     tool_ = world_->create_body(mesh, BodyType::Tool, far_, bunny_->centre);
+    tool_mesh_ = mesh;
   }
 
   void TearDown() override {
@@ -176,7 +177,7 @@ class ThreadsTest : public ::testing::Test {
   ProximityResult expected_;
   Wrench expected_wrench_;
   std::unique_ptr<World> world_;
-  Handle tool_, wall_, wall_mesh_;
+  Handle tool_, tool_mesh_, wall_, wall_mesh_;
   std::unique_ptr<ScriptedDevice> scripted_;
   std::unique_ptr<FaultyDevice> faulty_;
 };

@@ -41,13 +41,12 @@ def test_threads_with_the_scripted_device(world, bunny):
         assert p[0] == pytest.approx(0.1392, abs=1e-9)
         with pytest.raises(proxima.Busy, match="proxWorld_Step"):
             world.step()
-        # Meshes, bodies and tools come and go while the threads run; a tool's mesh keeps its shape.
+        # Meshes, bodies and tools come and go while the threads run, and a tool's mesh deforms.
         other = world.load_mesh(BUNNY)
         far = world.create_body(other, "static", pose=((0, 1, 0), (1, 0, 0, 0)))
         far.destroy()
         second = world.create_body(other, "tool", pose=((0, -1, 0), (1, 0, 0, 0)))
-        with pytest.raises(proxima.Busy, match="a tool holds the mesh"):
-            other.set_vertices(other.triangles()[0])
+        other.set_vertices(other.triangles()[0] * 1.01)
         second.destroy()
         with pytest.raises(proxima.Busy):
             tool.pose = ((0.2, 0, 0), (1, 0, 0, 0))

@@ -237,8 +237,8 @@ PROX_API proxResult proxMesh_GetTriangles(proxMeshId mesh, double* positions, ui
  * at the next proxWorld_Step, or at the threads' next iteration while they
  * run, where local tracking carries the contacts onto it. A count that
  * differs or a non-finite coordinate (named by vertex) is refused and
- * changes nothing. Game thread, at frame rate; while the threads run,
- * PROX_ERROR_BUSY for a mesh a tool holds. */
+ * changes nothing. Game thread, at frame rate, also while the threads run
+ * (a held tool's mesh too: its contacts are tracked on its new shape). */
 PROX_API proxResult proxMesh_SetVertices(proxMeshId mesh, const double* positions, uint32_t vertexCount);
 
 /* What loading the mesh's file skipped without failing: attributes Proxima
@@ -258,7 +258,7 @@ PROX_API proxResult proxMesh_GetWarnings(proxMeshId mesh, char* buffer, int32_t 
  * its vertices as proxMesh_SetVertices does (same topology, the hierarchy
  * refitted); where glTF vertices welded at rest move apart, the first in
  * scene order places the vertex. All: game thread, also while the threads
- * run, except (PROX_ERROR_BUSY) for a mesh a tool holds. A mesh without a
+ * run. A mesh without a
  * rig has zero of everything; posing it is PROX_ERROR_INVALID_ARGUMENT. */
 typedef struct proxRigInfo {
   int32_t skinCount;
@@ -293,8 +293,7 @@ PROX_API proxResult proxMesh_GetAnimationInfo(proxMeshId mesh, int32_t index, pr
 /* The scene at `seconds` of animation `animation` (clamped to its keyframes:
  * STEP, LINEAR with slerp for rotations, CUBICSPLINE): its nodes, skins
  * (linear blend) and morph weights; joint matrices and morph weights set
- * before are dropped. Game thread; while the threads run, PROX_ERROR_BUSY
- * for a mesh a tool holds. */
+ * before are dropped. Game thread, also while the threads run. */
 PROX_API proxResult proxMesh_Animate(proxMeshId mesh, int32_t animation, double seconds);
 
 /* Your engine's animation system drives the skin: `count` (the skin's joint

@@ -219,10 +219,6 @@ proxResult proxMesh_SetVertices(proxMeshId mesh, const double* positions, uint32
     runtime::World* w = nullptr;
     const runtime::Handle h = mesh_of(mesh, w);
     need(positions, "positions");
-    if (w->running() && w->mesh_held_by_tool(h))
-      fail(PROX_ERROR_BUSY,
-           "a tool holds the mesh and the world's threads are running: a tool's mesh is deformed with the "
-           "threads stopped (proxWorld_StopThreads)");
     Status s;
     if (!w->set_vertices(h, positions, vertexCount, s)) fail(PROX_ERROR_INVALID_ARGUMENT, s.message());
   });

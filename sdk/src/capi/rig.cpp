@@ -43,10 +43,6 @@ runtime::MeshRig& posable(runtime::World& w, runtime::Handle h) {
   if (!r)
     fail(PROX_ERROR_INVALID_ARGUMENT,
          "the mesh has no rig (it was not loaded from a glTF scene with skins, morph targets or animations)");
-  if (w.running() && w.mesh_held_by_tool(h))
-    fail(PROX_ERROR_BUSY,
-         "a tool holds the mesh and the world's threads are running: a tool's mesh is deformed with the "
-         "threads stopped (proxWorld_StopThreads)");
   return *r;
 }
 

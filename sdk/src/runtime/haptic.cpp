@@ -54,7 +54,8 @@ std::uint64_t snapshot_checksum(const ContactSnapshot& snapshot) {
     h = (h ^ bits(c.distance) ^ (bits(c.tool_point_local.x) << 1) ^ bits(c.other_point.y)) * 0x100000001B3ull;
   for (const coupling::ProxyConstraint& c : snapshot.constraints)
     h = (h ^ bits(c.distance) ^ (bits(c.normal.x) << 1) ^ bits(c.arm.y)) * 0x100000001B3ull;
-  return h ^ bits(snapshot.time) ^ bits(snapshot.tool_pose.translation.x) ^ (bits(snapshot.reach) << 3);
+  return h ^ bits(snapshot.time) ^ bits(snapshot.tool_pose.translation.x) ^ (bits(snapshot.reach) << 3) ^
+         (bits(snapshot.radius) << 5);
 }
 
 Wrench evaluate_contacts(const ForceSettings& settings, const ContactSnapshot& snapshot, const Pose& pose,

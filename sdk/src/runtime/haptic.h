@@ -44,6 +44,9 @@ struct ContactSnapshot {
   // (coupling/haptic_proxy.h).
   std::vector<coupling::ProxyConstraint> constraints;
   double reach = 0.0;
+  // The radius of the tool's bounds about its reference point, of the shape
+  // the contacts were tracked on (a deforming tool's changes).
+  double radius = 0.0;
   std::uint64_t checksum = 0;           // snapshot_checksum(), set last by the writer
 };
 

@@ -30,7 +30,8 @@ Wrench HapticRenderer::instantaneous(const ContactSnapshot& snapshot, const Pose
     return evaluate_contacts(settings_.force, snapshot, device, settings_.reference_local, closest);
   *proxy = coupling::haptic_proxy(settings_.coupling, {snapshot.tool_pose, snapshot.reach}, snapshot.constraints,
                                   coupling::target_distance(settings_.force.safety_distance), device,
-                                  settings_.reference_local, settings_.radius, lambda_);
+                                  settings_.reference_local, snapshot.radius > 0.0 ? snapshot.radius : settings_.radius,
+                                  lambda_);
   if (closest) *closest = closest_tracked_distance(snapshot);
   // The spring alone (no damper): free of every constraint the ideal is the
   // device pose itself, and the spring exactly nothing.

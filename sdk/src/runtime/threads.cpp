@@ -324,7 +324,7 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
   // coupling's spring is what tells the hand, so only a free tool's
   // contacts can be left behind by it.
   if (valid && !tool.constrained &&
-      pose_displacement(snapshot.tool_pose, sample.pose, tool.reference_local, tool.radius) >
+      pose_displacement(snapshot.tool_pose, sample.pose, tool.reference_local, snapshot.radius) >
           settings_.trust_distance)
     count(untrusted_ticks_), valid = false, flags |= kTraceUntrusted;
   // A tick whose contacts are not trusted (stale, left behind, no pose this

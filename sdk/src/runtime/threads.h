@@ -186,7 +186,7 @@ class Threads {
     std::uint32_t body = 0;
     Device device;
     Vec3 reference_local{0.0};
-    double radius = 0.0;                          // of the tool's bounds about the reference point
+    double radius = 0.0;                          // of the tool's bounds about the reference point, as made
     SeqLock<PoseSample> pose;                     // haptic -> local, global, game
     SeqLock<PoseSample> game_pose;                // game -> haptic, for tools no device holds
     SeqLock<WrenchSample> wrench;                 // haptic -> game

@@ -161,12 +161,13 @@ void Threads::track(Tool& tool, const ToolSet& set, std::vector<const LmdPair*>&
     // Until a global search has seen the proxy nothing says what is near it.
     if (tool.anchored) {
       const double from_anchor = coupling::twist_displacement(
-          coupling::twist_between(tool.anchor, sample.pose, tool.reference_local), tool.radius);
+          coupling::twist_between(tool.anchor, sample.pose, tool.reference_local), view.bodies[tool.body].radius);
       s.reach = coupling::unchecked_reach(tool.proxy_state.clearance, from_anchor,
                                           world_.settings_.force.safety_distance, world_.settings_.cutoff);
     }
   }
   s.tool_pose = sample.pose;
+  s.radius = view.bodies[tool.body].radius;
   s.time = sample.time;
   s.sequence = ++tool.published;
   s.dropped = static_cast<std::uint32_t>(total - scratch.size());
@@ -197,7 +198,7 @@ void Threads::move_proxy(Tool& tool, const PoseSample& device) {
     tool.obstacles.push_back({&other_mesh.mesh, other_mesh.snch.get(), lp.other_pose});
   }
   const coupling::ProxyTool proxy_tool{&tool_mesh.mesh, tool_mesh.snch.get(), tool.reference_local,
-                                       tool.radius};
+                                       view.bodies[tool.body].radius};
   const coupling::ProxySettings settings{world_.settings_.force.safety_distance, world_.settings_.cutoff};
   coupling::ProxyStats stats;
   // Bodies beyond the global search's range were farther than the cutoff

@@ -141,8 +141,6 @@ class World {
   // count that differs or a non-finite coordinate, changing nothing.
   bool set_vertices(Handle mesh, const double* positions, std::uint32_t count, Status& status);
   bool set_vertices(Handle mesh, const std::vector<Vec3>& positions, Status& status);
-  // Whether a tool's body uses the mesh.
-  bool mesh_held_by_tool(Handle mesh) const;
 
   // glTF rigs (runtime/mesh_rig.h, docs/dynamic-scenes.md): the rig a mesh
   // was loaded with, whose input vertices must be the mesh's, and the game

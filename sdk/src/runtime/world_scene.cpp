@@ -69,12 +69,6 @@ bool World::destroy_mesh(Handle h, Status& status) {
   return true;
 }
 
-bool World::mesh_held_by_tool(Handle mesh) const {
-  for (const BodySlot& b : bodies_)
-    if (b.alive && b.type == BodyType::Tool && b.mesh == mesh.index) return true;
-  return false;
-}
-
 bool World::set_vertices(Handle h, const std::vector<Vec3>& positions, Status& status) {
   std::vector<double> xyz(3 * positions.size());
   for (std::size_t v = 0; v < positions.size(); ++v)
