@@ -33,7 +33,7 @@ const char* kUsage =
     "               [--csv FILE]\n"
     "  proxima run [A B] [--device scripted|stream|hid[:VVVV:PPPP]] [--poses FILE] [--seconds S] [--hold S]\n"
     "              [--method precise|original] [--force hard|soft] [--tool-mode free|constrained]\n"
-    "              [--json FILE] [--trace FILE.csv]\n"
+    "              [--json FILE] [--trace FILE.csv] [--animate-a INDEX] [--animate-b INDEX]\n"
     "              [--stream-rate HZ] [--stream-mode hold|interpolate|extrapolate]\n"
     "              [--haptic-timing auto|spin|sleep] [--spin-margin S] [--realtime] [--lock-memory]\n"
     "  proxima devices [--json FILE]\n"

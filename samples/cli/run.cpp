@@ -162,6 +162,7 @@ int run(Args& args) {
   Settings settings = preset(PROX_FORCE_PRESET_HARD);
   proxThreadsDef threads = proxDefaultThreadsDef();
   proxToolMode tool_mode = PROX_TOOL_FREE;
+  int animate[2] = {-1, -1};  // A's and B's glTF animation played while the threads run; -1: none
   if (!args.empty() && args.peek().rfind("--", 0) != 0) {
     path_a = args.next("mesh A");
     path_b = args.next("mesh B");
@@ -188,6 +189,11 @@ int run(Args& args) {
       json_path = args.next("--json file");
     } else if (opt == "--trace") {
       trace_path = args.next("--trace file");
+    } else if (opt == "--animate-a" || opt == "--animate-b") {
+      const double index = parse_number(args.next((opt + " INDEX").c_str()), opt.c_str());
+      if (index < 0 || index > 2147483647.0 || index != std::floor(index))
+        fail(opt + ": the animation index is not a whole number >= 0");
+      animate[opt == "--animate-a" ? 0 : 1] = static_cast<int32_t>(index);
     } else if (opt == "--device") {
       device_kind = args.next("--device value");
       if (device_kind != "scripted" && device_kind != "stream" && !is_hid_kind(device_kind))
@@ -316,14 +322,39 @@ int run(Args& args) {
       }
     });
   }
+  // The animations played, as a game's frame loop would pose its meshes
+  // (each looping over its keyframes).
+  const proxMeshId animated_mesh[2] = {scene.mesh_a(), scene.mesh_b()};
+  proxAnimationInfo animation[2] = {};
+  long animation_frames = 0;
+  for (int m = 0; m < 2; ++m)
+    if (animate[m] >= 0) {
+      int32_t count = 0;
+      check(proxMesh_GetAnimationCount(animated_mesh[m], &count));
+      if (animate[m] >= count)
+        fail(std::string(m ? "--animate-b" : "--animate-a") + ": animation " + std::to_string(animate[m]) +
+             " does not exist (the mesh has " + std::to_string(count) + ")");
+      check(proxMesh_GetAnimationInfo(animated_mesh[m], animate[m], &animation[m]));
+      std::printf("animation: %s's \"%s\" (%.3g s), played at 60 Hz while the threads run\n", m ? "B" : "A",
+                  animation[m].name, animation[m].duration - animation[m].start);
+    }
+  const bool animating = animate[0] >= 0 || animate[1] >= 0;
   std::printf("%8s %12s %9s %12s\n", "time s", "tool x m", "contacts", "|force| N");
   const auto start = std::chrono::steady_clock::now();
-  // A constrained tool's proxy is measured every 10 ms (every tenth printed).
-  const int per_row = constrained ? 10 : 1;
+  // A constrained tool's proxy is measured every 10 ms, animations posed
+  // every 1/60 s (a row printed every 100 ms).
+  const int per_row = constrained ? 10 : animating ? 6 : 1;
   for (int frame = 0;; ++frame) {
     const double t = 0.1 * frame / per_row;
     std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                               std::chrono::duration<double>(t)));
+    for (int m = 0; m < 2; ++m)
+      if (animate[m] >= 0) {
+        const double length = animation[m].duration - animation[m].start;
+        check(proxMesh_Animate(animated_mesh[m], animate[m],
+                               animation[m].start + (length > 0.0 ? std::fmod(t, length) : 0.0)));
+        ++animation_frames;
+      }
     proxPose pose;
     check(proxBody_GetPose(scene.b(), &pose));
     if (watch) watch->sample(scene, pose);
@@ -419,6 +450,7 @@ int run(Args& args) {
     j.key("haptic_timing").value(stats[0].timing == PROX_TIMING_SPIN ? "spin" : "sleep");
     j.key("spin_margin_ms").value(threads.spinMargin * 1e3);
     j.key("memory_locked").value(stats[0].memoryLocked != 0);
+    j.key("animation_frames").value(static_cast<long long>(animation_frames));
     j.key("threads").begin_object();
     for (int i = 0; i < 3; ++i) {
       const proxThreadStats& s = stats[i];
