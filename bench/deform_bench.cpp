@@ -8,6 +8,13 @@
 //           shape, refit, publish); then the search's node pairs on the
 //           refitted tree after every frame against a tree built afresh for
 //           the same shape;
+//   skin    a skinned glTF posed by its animation every frame: the rig
+//           evaluated (linear blend), the vertices moved and the hierarchy
+//           refitted, as proxMesh_Animate does;
+//   track   local tracking across a deformation: a sheet under the wave, a
+//           probe above it; each frame the last frame's LMDs are tracked onto
+//           the new shape and compared with the brute-force reference there
+//           (kept, lost, spurious);
 //   churn   a static body made and destroyed at 100 Hz beside a held tool
 //           while the threads run: the haptic loop's period p99 and max.
 //
@@ -15,6 +22,7 @@
 //   proxima_deform_bench [--frames N] [--churn-seconds S] [--json FILE]
 #include "common/json_writer.h"
 #include "contact/proximity.h"
+#include "io/gltf.h"
 #include "io/obj.h"
 #include "runtime/scripted_device.h"
 #include "runtime/threads.h"
@@ -71,6 +79,30 @@ Shape sheet(int n) {
   return s;
 }
 
+// A UV sphere of radius r about the origin, `n` rings and 2n segments,
+// counter-clockwise seen from outside (closed: its poles are shared vertices).
+Shape sphere(double r, int n) {
+  Shape s{"sphere", {}, {}};
+  s.positions.insert(s.positions.end(), {0.0, 0.0, r});
+  for (int i = 1; i < n; ++i)
+    for (int j = 0; j < 2 * n; ++j) {
+      const double th = kPi * i / n, ph = kPi * j / n;
+      s.positions.insert(s.positions.end(), {r * std::sin(th) * std::cos(ph), r * std::sin(th) * std::sin(ph),
+                                             r * std::cos(th)});
+    }
+  s.positions.insert(s.positions.end(), {0.0, 0.0, -r});
+  const auto at = [n](int i, int j) { return static_cast<std::uint32_t>(1 + (i - 1) * 2 * n + (j % (2 * n))); };
+  const auto south = static_cast<std::uint32_t>(s.positions.size() / 3 - 1);
+  for (int j = 0; j < 2 * n; ++j) {
+    s.indices.insert(s.indices.end(), {0, at(1, j), at(1, j + 1)});
+    for (int i = 1; i + 1 < n; ++i)
+      s.indices.insert(s.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1),
+                                         at(i, j + 1)});
+    s.indices.insert(s.indices.end(), {at(n - 1, j), south, at(n - 1, j + 1)});
+  }
+  return s;
+}
+
 // The wave at frame f of a 60 Hz animation: each vertex moved along `axis`
 // by amplitude * sin(2 pi (x / wavelength - f / 60)), x along the first axis.
 void wave(const Mesh& rest, int frame, int axis, double amplitude, double wavelength, std::vector<double>& out) {
@@ -103,14 +135,17 @@ RefitRow refit_row(const Shape& shape, int frames, int axis, double amplitude, d
   Mesh mesh = rest;
   Snch snch(rest);
   // A probe to search against: a small sheet 1 mm above the rest shape's
-  // middle, facing down, so that the search has contacts to find.
+  // middle, facing down and tilted by 0.02 rad, so that the search has
+  // contacts to find but no exactly parallel flat field (where which of the
+  // tied LMDs a reduction keeps depends on the order the tree hands them out).
   const Shape probe_shape = sheet(8);
   Mesh probe = Mesh::build({probe_shape.positions.data(), 81, probe_shape.indices.data(), 128}, status);
   const Snch probe_snch(probe);
   const Aabb box = rest.bounds();
   const Vec3 middle = 0.5 * (box.min + box.max);
   Pose probe_pose{glm::dmat3(1.0), Vec3(middle.x - 0.1, middle.y - 0.1, box.max.z + amplitude + 0.001)};
-  probe_pose.rotation = glm::dmat3(1, 0, 0, 0, -1, 0, 0, 0, -1);  // facing down
+  const double c = std::cos(0.02), s = std::sin(0.02);
+  probe_pose.rotation = glm::dmat3(1, 0, 0, 0, -1, 0, 0, 0, -1) * glm::dmat3(c, 0, s, 0, 1, 0, -s, 0, c);
   probe_pose.translation.y += 0.2;
 
   runtime::World world{runtime::WorldSettings{}};
@@ -134,11 +169,16 @@ RefitRow refit_row(const Shape& shape, int frames, int axis, double amplitude, d
       throw std::runtime_error(status.message());
     in_world.push_back(seconds_since(t0));
     if (world.snch(handle).stats().refits <= before) ++row.rebuilds;
-    // The search on both trees: what refitting costs in node pairs.
+    // The search on both trees: what refitting costs in node pairs. Patches
+    // off: which LMDs of a flat field merge depends on the order the
+    // candidates come in, which the trees' shapes decide.
     PairState s1, s2;
     ProximityResult on_refit, on_fresh;
-    find_lmds({&probe, &probe_snch, probe_pose, &mesh, &snch, Pose{}, 0.005}, Method::Precise, s1, on_refit);
-    find_lmds({&probe, &probe_snch, probe_pose, &mesh, &fresh, Pose{}, 0.005}, Method::Precise, s2, on_fresh);
+    PairQuery q1{&probe, &probe_snch, probe_pose, &mesh, &snch, Pose{}, 0.005};
+    PairQuery q2{&probe, &probe_snch, probe_pose, &mesh, &fresh, Pose{}, 0.005};
+    q1.patches.radius_over_cutoff = q2.patches.radius_over_cutoff = 0.0;
+    find_lmds(q1, Method::Precise, s1, on_refit);
+    find_lmds(q2, Method::Precise, s2, on_fresh);
     if (on_fresh.global.node_pairs > 0)
       ratio.push_back(double(on_refit.global.node_pairs) / double(on_fresh.global.node_pairs));
     if (on_refit.lmds.size() != on_fresh.lmds.size())
@@ -150,6 +190,106 @@ RefitRow refit_row(const Shape& shape, int frames, int axis, double amplitude, d
   row.world_ms = 1e3 * median(in_world);
   row.degradation = snch.stats().degradation;
   row.node_pairs_ratio = median(ratio);
+  return row;
+}
+
+struct SkinRow {
+  std::string mesh;
+  std::uint32_t triangles = 0;
+  double animate_ms = 0;  // evaluate the rig, move the vertices, refit: one frame
+};
+
+// `file`'s animation 0 at 60 Hz over `frames` frames.
+SkinRow skin_row(const std::string& assets, const std::string& file, int frames) {
+  std::vector<io::GltfMesh> parts;
+  Status status = io::load_gltf(assets + "/" + file, io::GltfLoadOptions{}, parts);
+  if (!status || parts.empty() || !parts[0].rig) throw std::runtime_error(file + ": no rig (" + status.message() + ")");
+  runtime::World world{runtime::WorldSettings{}};
+  const io::GltfMesh& m = parts[0];
+  const runtime::Handle h =
+      world.create_mesh({m.positions.data(), static_cast<std::uint32_t>(m.positions.size() / 3), m.indices.data(),
+                         static_cast<std::uint32_t>(m.indices.size() / 3)},
+                        status);
+  if (!status || !world.set_rig(h, m.rig, status)) throw std::runtime_error(file + ": " + status.message());
+  SkinRow row{file, world.mesh(h).triangle_count(), 0.0};
+  std::vector<Vec3> positions;
+  std::vector<double> times;
+  for (int f = 0; f < frames; ++f) {
+    const auto t0 = Clock::now();
+    runtime::MeshRig& rig = *world.rig(h);
+    if (!rig.animate(0, f / 60.0, status)) throw std::runtime_error(status.message());
+    rig.welded_positions(world.mesh(h), positions);
+    if (!world.set_vertices(h, positions, status)) throw std::runtime_error(status.message());
+    times.push_back(seconds_since(t0));
+  }
+  row.animate_ms = 1e3 * median(times);
+  return row;
+}
+
+struct TrackRow {
+  int frames = 0;
+  long reference = 0, kept = 0, lost = 0, spurious = 0;
+};
+
+// Whether an LMD of `found` has the same closest points as `p` (to `tolerance`).
+bool matched(const LmdPair& p, const std::vector<LmdPair>& found, double tolerance) {
+  for (const LmdPair& q : found)
+    if (glm::length(q.point_a - p.point_a) <= tolerance && glm::length(q.point_b - p.point_b) <= tolerance)
+      return true;
+  return false;
+}
+
+// A 10,082-triangle sheet under the wave (2 mm, 10 cm wavelength, 60 Hz
+// frames), a 1 cm ball 1 mm above the wave's crest: the LMDs
+// of each frame tracked onto the next shape (one local update, as the local
+// thread does after a deformation), against the brute-force reference.
+TrackRow track_row(int frames) {
+  const Shape shape = sheet(71);
+  Status status;
+  const Mesh rest = Mesh::build({shape.positions.data(), static_cast<std::uint32_t>(shape.positions.size() / 3),
+                                 shape.indices.data(), static_cast<std::uint32_t>(shape.indices.size() / 3)},
+                                status);
+  Mesh mesh = rest;
+  Snch snch(rest);
+  const Shape ball = sphere(0.01, 12);
+  const Mesh probe = Mesh::build({ball.positions.data(), static_cast<std::uint32_t>(ball.positions.size() / 3),
+                                  ball.indices.data(), static_cast<std::uint32_t>(ball.indices.size() / 3)},
+                                 status);
+  if (!status) throw std::runtime_error("sphere: " + status.message());
+  const Snch probe_snch(probe);
+  const Pose probe_pose{glm::dmat3(1.0), Vec3(0.1, 0.1, 0.002 + 0.001 + 0.01)};
+  const double cutoff = 0.005, tolerance = 1e-9;
+  TrackRow row;
+  std::vector<double> xyz;
+  wave(rest, 0, 2, 0.002, 0.1, xyz);
+  mesh.set_vertices(xyz.data(), mesh.vertex_count());
+  snch.refit(mesh);
+  PairState state;
+  ProximityResult start;
+  find_lmds({&probe, &probe_snch, probe_pose, &mesh, &snch, Pose{}, cutoff}, Method::Precise, state, start);
+  std::vector<LmdPair> tracked = start.lmds;
+  LocalTracker tracker;
+  for (int f = 1; f <= frames; ++f) {
+    wave(rest, f, 2, 0.002, 0.1, xyz);
+    mesh.set_vertices(xyz.data(), mesh.vertex_count());
+    snch.refit(mesh);
+    LocalTrackingStats stats;
+    tracker.update({&probe, &probe_snch, probe_pose, &mesh, &snch, Pose{}, cutoff}, tracked, stats);
+    PairState s;
+    ProximityResult ref;
+    find_lmds({&probe, &probe_snch, probe_pose, &mesh, &snch, Pose{}, cutoff}, Method::Reference, s, ref);
+    for (const LmdPair& p : ref.lmds) (matched(p, tracked, tolerance) ? row.kept : row.lost) += 1;
+    for (const LmdPair& p : tracked)
+      if (p.distance <= cutoff && !matched(p, ref.lmds, tolerance)) ++row.spurious;
+    row.reference += static_cast<long>(ref.lmds.size());
+    ++row.frames;
+    // What the next frame starts from: the global search's set, as the
+    // threads would have it within a frame or two (a lost LMD is a birth
+    // the search finds, not one tracking can).
+    ProximityResult fresh;
+    find_lmds({&probe, &probe_snch, probe_pose, &mesh, &snch, Pose{}, cutoff}, Method::Precise, state, fresh);
+    tracked = fresh.lmds;
+  }
   return row;
 }
 
@@ -267,6 +407,17 @@ int main(int argc, char** argv) {
       std::printf("%-13s %9u %9.3f %9.3f %10.3f %10.3f %8d %11.3f %13.3f\n", r.mesh.c_str(), r.triangles,
                   r.move_ms, r.refit_ms, r.rebuild_ms, r.world_ms, r.rebuilds, r.degradation,
                   r.node_pairs_ratio);
+    std::vector<SkinRow> skins;
+    for (const char* file : {"gltf/RiggedFigure.glb", "gltf/RecursiveSkeletons.glb"})
+      skins.push_back(skin_row(assets, file, frames));
+    for (const SkinRow& s : skins)
+      std::printf("skin: %s, %u triangles: proxMesh_Animate's work (evaluate, move, refit) %.3f ms a frame\n",
+                  s.mesh.c_str(), s.triangles, s.animate_ms);
+    const TrackRow tr = track_row(std::min(frames, 60));
+    std::printf(
+        "track: %d frames of a waved 10k sheet under a ball: %ld reference LMDs, %ld kept by one local update, "
+        "%ld lost (births for the global search), %ld spurious\n",
+        tr.frames, tr.reference, tr.kept, tr.lost, tr.spurious);
     ChurnRow c;
     if (churn_seconds > 0.0) {
       c = churn(assets + "/bunny.obj", churn_seconds, 100.0);
@@ -294,6 +445,22 @@ int main(int argc, char** argv) {
         j.end_object();
       }
       j.end_array();
+      j.key("skin").begin_array();
+      for (const SkinRow& s : skins) {
+        j.begin_object();
+        j.key("mesh").value(s.mesh);
+        j.key("triangles").value(static_cast<long long>(s.triangles));
+        j.key("animate_ms").value(s.animate_ms);
+        j.end_object();
+      }
+      j.end_array();
+      j.key("track").begin_object();
+      j.key("frames").value(tr.frames);
+      j.key("reference").value(static_cast<long long>(tr.reference));
+      j.key("kept").value(static_cast<long long>(tr.kept));
+      j.key("lost").value(static_cast<long long>(tr.lost));
+      j.key("spurious").value(static_cast<long long>(tr.spurious));
+      j.end_object();
       j.key("churn").begin_object();
       j.key("seconds").value(c.seconds);
       j.key("bodies").value(c.made);
