@@ -123,7 +123,6 @@ class Threads {
   // still see is freed by the game thread, never by the others.
   void add_tool(std::uint32_t body);
   void remove_tool(std::uint32_t body);
-  bool holds(std::uint32_t body) const;
 
   // Game thread.
   void set_tool_pose(std::uint32_t body, const Pose& pose);

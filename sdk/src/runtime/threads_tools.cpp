@@ -82,8 +82,6 @@ void Threads::reclaim() {
                  retired_.end());
 }
 
-bool Threads::holds(std::uint32_t body) const { return tool_of(body) != nullptr; }
-
 const Threads::Tool* Threads::tool_of(std::uint32_t body) const {
   const ToolSet& set = current();
   if (body >= set.of_body.size() || set.of_body[body] < 0) return nullptr;
