@@ -4,6 +4,7 @@
 // compiled against this stub is ever run. In Unity the real UnityEngine
 // replaces it.
 using System;
+using System.Collections.Generic;
 
 namespace UnityEngine
 {
@@ -11,6 +12,7 @@ namespace UnityEngine
     {
         public string name { get; set; }
         public static T FindObjectOfType<T>() where T : Object => throw new NotSupportedException("compile check only");
+        public static void Destroy(Object obj) => throw new NotSupportedException("compile check only");
     }
 
     public class Component : Object
@@ -54,11 +56,20 @@ namespace UnityEngine
     {
         public Vector3[] vertices { get; set; }
         public int[] triangles { get; set; }
+        public void GetVertices(List<Vector3> vertices) => throw new NotSupportedException("compile check only");
     }
 
     public sealed class MeshFilter : Component
     {
         public Mesh sharedMesh { get; set; }
+    }
+
+    public class Renderer : Component { }
+
+    public class SkinnedMeshRenderer : Renderer
+    {
+        public Mesh sharedMesh { get; set; }
+        public void BakeMesh(Mesh mesh, bool useScale) => throw new NotSupportedException("compile check only");
     }
 
     public static class Gizmos
@@ -72,6 +83,7 @@ namespace UnityEngine
     {
         public static void Log(object message) => throw new NotSupportedException("compile check only");
         public static void LogWarning(object message) => throw new NotSupportedException("compile check only");
+        public static void LogError(object message) => throw new NotSupportedException("compile check only");
     }
 
     public static class Time

@@ -46,6 +46,9 @@ namespace Proxima.Unity
             return found;
         }
 
+        /// <summary>The world exists (meshes may deform, also while its threads run).</summary>
+        internal bool IsAlive => world != null && world.IsValid;
+
         /// <summary>The world exists and its threads do not run: bodies may leave it.</summary>
         internal bool AcceptsChanges => world != null && world.IsValid && !started;
 
