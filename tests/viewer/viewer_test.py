@@ -344,17 +344,23 @@ def coverage(sidecar, triangles, margin):
 
 
 class ViewerAnimationTest(unittest.TestCase):
-    def test_the_animated_mesh_is_drawn_as_posed(self):
+    def check_played(self, tool):
         # AnimatedMorphCube (a 2 m cube; its first morph target flattens it along world z, its weight 1 at
-        # 1.6 s) as A, playing animation 0; Box.glb as the tool, 4 m along x. Headless, frame i is 1/60 s
-        # apart: frame 0 is the cube at rest, frame 96 the flat one. The oracle poses the file here.
+        # 1.6 s) playing animation 0 with Box.glb, the tool 4 m along x: the cube as A (--animate) or as the
+        # tool (--animate-b). Headless, frames are 1/60 s apart: frame 0 is the cube at rest, frame 96 the
+        # flat one. The oracle poses the file here.
         cube, box = os.path.join(ASSETS, "gltf", "AnimatedMorphCube.glb"), os.path.join(ASSETS, "gltf", "Box.glb")
+        args = (box, cube, "--animate-b", "0") if tool else (cube, box, "--animate", "0")
+        shift = 4.0 if tool else 0.0
         oracle = gltf_pose.Gltf(cube)
+
+        def triangles(*at):
+            return [tuple((v[0] + shift, v[1], v[2]) for v in tri) for tri in oracle.triangles(*at)]
+
         frames = (0, 96)
         with tempfile.TemporaryDirectory() as d:
-            r = run(cube, box, "--pose-b", "4", "0", "0", "1", "0", "0", "0", "--animate", "0", "--headless",
-                    "--validation", "--frames", str(frames[-1] + 1), "--size", f"{SIZE[0]}x{SIZE[1]}", "--msaa", "1",
-                    "--show", "meshes", "--out", d)
+            r = run(*args, "--pose-b", "4", "0", "0", "1", "0", "0", "0", "--headless", "--validation", "--frames",
+                    str(frames[-1] + 1), "--size", f"{SIZE[0]}x{SIZE[1]}", "--msaa", "1", "--show", "meshes", "--out", d)
             self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
             self.assertNotRegex(r.stderr, VALIDATION)
             shots = {}
@@ -363,27 +369,34 @@ class ViewerAnimationTest(unittest.TestCase):
                     shots[i] = (png.read(os.path.join(d, f"frame-{i:04d}.png")), json.load(f))
         # The camera holds the cube over its whole animation (4.2 s): every posed vertex is in the frame.
         for k in range(0, 253, 6):
-            for tri in oracle.triangles(0, k / 60):
+            for tri in triangles(0, k / 60):
                 for v in tri:
                     x, y, z = project(shots[0][1], v)
                     self.assertTrue(0 <= x < SIZE[0] and 0 <= y < SIZE[1] and 0 < z < 1, f"{v} at {k / 60} s")
-        rest = oracle.triangles()
+        rest = triangles()
         drawn = {}
         for i in frames:
             image, sidecar = shots[i]
-            posed = oracle.triangles(0, i / 60)
-            # A's pixels (warm grey, the tool is blue): all of the posed cube's inside, nothing outside it
-            # (pixel centres within 0.75 px of an edge may go either way).
+            posed = triangles(0, i / 60)
+            # The cube's pixels (A warm grey, the tool blue): all of the posed cube's inside, nothing outside
+            # it (pixel centres within 0.75 px of an edge may go either way).
             drawn[i] = {(x, y) for y in range(image.height) for x in range(image.width)
-                        if image.pixel(x, y)[0] > image.pixel(x, y)[2]}
+                        if (image.pixel(x, y)[2] > image.pixel(x, y)[0]) == tool and image.pixel(x, y) !=
+                        tuple(sidecar["background"])}
             inside, hull = coverage(sidecar, posed, 0.75), coverage(sidecar, posed, -0.75)
-            self.assertGreater(len(inside), 2000)
+            self.assertGreater(len(inside), 3000)
             self.assertEqual(inside - drawn[i], set(), f"frame {i}: pixels of the posed mesh not drawn")
             self.assertEqual(drawn[i] - hull, set(), f"frame {i}: pixels drawn outside the posed mesh")
             if i:
                 # Where the cube was at rest and no longer is: the rest pose drawn would fail above.
-                self.assertGreater(len(coverage(sidecar, rest, 0.75) - hull), 2000)
-        self.assertGreater(len(drawn[0] ^ drawn[96]), 2000, "the silhouette did not change")
+                self.assertGreater(len(coverage(sidecar, rest, 0.75) - hull), 3000)
+        self.assertGreater(len(drawn[0] ^ drawn[96]), 3000, "the silhouette did not change")
+
+    def test_the_animated_mesh_is_drawn_as_posed(self):
+        self.check_played(tool=False)
+
+    def test_the_animated_tool_is_drawn_as_posed(self):
+        self.check_played(tool=True)
 
 
 class ViewerConstrainedTest(unittest.TestCase):
