@@ -11,6 +11,7 @@ namespace viewer {
 struct HudState {
   double frame_seconds = 0.0;                // the last frame's, CPU and GPU
   const proxThreadStats* threads = nullptr;  // haptic, local, global; nullptr: the world was stepped
+  bool stepped_each_frame = false;           // stepped, once per frame (an animated mesh), not once
   std::size_t contacts = 0;
   double force = 0.0, max_force = 1.0;  // N
   double torque = 0.0;                  // N m

@@ -85,7 +85,7 @@ void TextHud::layout(const HudState& hud) {
       ImGui::Text("%s  %6.0f Hz  p99 %.2f ms", names[t], hud.threads[t].achievedRate,
                   hud.threads[t].periodP99 * 1e3);
     else
-      ImGui::Text("%s  stepped once", names[t]);
+      ImGui::Text("%s  stepped %s", names[t], hud.stepped_each_frame ? "each frame" : "once");
   }
   ImGui::Text("LMDs    %zu", hud.contacts);
   ImGui::Text("force   %.3f N   torque %.4f N m", hud.force, hud.torque);

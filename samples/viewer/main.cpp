@@ -86,7 +86,7 @@ class Viewer {
     path_a_ = o.mesh_a.empty() ? default_asset("bunny.obj") : o.mesh_a;
     path_b_ = o.mesh_b.empty() ? path_a_ : o.mesh_b;
   }
-  const RenderMesh& mesh_tool() const { return path_b_ == path_a_ ? mesh_a_ : mesh_b_; }
+  const RenderMesh& mesh_tool() const { return scene_->shares_mesh() ? mesh_a_ : mesh_b_; }
 
   int run_headless();
   int run_window();
@@ -97,12 +97,25 @@ class Viewer {
   void build_scene() {
     scene_ = std::make_unique<Scene>(options_, path_a_, path_b_);
     mesh_a_ = scene_->render_mesh(false);
-    if (path_b_ != path_a_) mesh_b_ = scene_->render_mesh(true);
+    if (!scene_->shares_mesh()) mesh_b_ = scene_->render_mesh(true);
     if (!options_.out_dir.empty()) {
       std::error_code ec;
       std::filesystem::create_directories(options_.out_dir, ec);
       if (ec)
         throw std::runtime_error(options_.out_dir + ": cannot create the directory (" + ec.message() + ")");
+    }
+  }
+  // --animate: poses the meshes at `seconds` of their animations and hands
+  // the renderer the posed vertices, into the buffers it has (the vertex
+  // count never changes).
+  void animate(Renderer& renderer, double seconds) {
+    if (!scene_->animate(seconds)) return;
+    frame_.polylines_valid = false;  // the shapes changed, if the tool did not move
+    scene_->read_vertices(false, mesh_a_.positions);
+    renderer.update_vertices(false, mesh_a_.positions);
+    if (!scene_->shares_mesh()) {
+      scene_->read_vertices(true, mesh_b_.positions);
+      renderer.update_vertices(true, mesh_b_.positions);
     }
   }
   // Reads the scene and builds what the frame draws.
@@ -116,6 +129,7 @@ class Viewer {
       HudState hud;
       hud.frame_seconds = timing_.last();
       hud.threads = frame_.threads ? frame_.thread_stats : nullptr;
+      hud.stepped_each_frame = scene_->animated();
       hud.contacts = frame_.contacts.size();
       const proxVec3& f = frame_.wrench.force;
       const proxVec3& t = frame_.wrench.torque;
@@ -227,6 +241,7 @@ int Viewer::run_headless() {
     frame_camera(extent);
     for (int i = 0; i < options_.frames && !g_stop; ++i) {
       const Clock::time_point start = Clock::now();
+      animate(renderer, i / 60.0);  // headless: frame i at i / 60 s, the same every run
       const FrameInput in = prepare(extent);
       VkCommandBuffer cmd = vk.begin_frame();
       renderer.record(cmd, target.framebuffer(), extent, in);
@@ -299,6 +314,7 @@ int Viewer::run_window() {
     input.mouse_device = options_.device_kind == DeviceKind::mouse;
     attach_input(window, &input);
     bool announced = false;
+    const Clock::time_point animation_start = Clock::now();
     for (int i = 0;
          !glfwWindowShouldClose(window) && !g_stop && (options_.frames == 0 || i < options_.frames);) {
       glfwPollEvents();
@@ -347,6 +363,7 @@ int Viewer::run_window() {
         target.create(*renderer, extent);
         continue;
       }
+      animate(*renderer, std::chrono::duration<double>(Clock::now() - animation_start).count());
       const FrameInput in = prepare(target.extent());
       VkCommandBuffer cmd = vk.begin_frame();
       renderer->record(cmd, fb, target.extent(), in);

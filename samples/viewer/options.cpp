@@ -38,6 +38,11 @@ const char* const kUsage =
     "                                    auto: a HID device if one is plugged in, else in a window a\n"
     "                                    gamepad if one is connected, else the mouse; headless scripted\n"
     "                                  default: scripted without meshes; with A and B the tool stays put\n"
+    "  --animate INDEX                 play A's glTF animation INDEX (as `proxima info` numbers them),\n"
+    "                                  looped over its keyframes: real time in a window, frame / 60 s\n"
+    "                                  headless; the mesh is posed with proxMesh_Animate and drawn as\n"
+    "                                  the world holds it (also --animate-a)\n"
+    "  --animate-b INDEX               the same for the tool's mesh B\n"
     "  --poses FILE                    the scripted device's path: one pose per line, tx ty tz qw qx qy qz\n"
     "  --seconds S                     path T: the time of each leg; --poses: of the whole path (default 4)\n"
     "  --headless                      render offscreen (no display needed; picks the CPU Vulkan device)\n"
@@ -161,6 +166,14 @@ Options parse_options(int argc, char** argv, bool* help) {
       if (o.device != "auto" && o.device != "scripted" && o.device != "mouse" && o.device != "gamepad" &&
           o.device != "hid")
         fail("--device: '" + o.device + "' is not auto, scripted, mouse, gamepad or hid");
+    } else if (a == "--animate" || a == "--animate-a" || a == "--animate-b") {
+      const int index = integer(next(a + " index"), a, 0, 2147483647);
+      if (a == "--animate-b") {
+        o.animate_b = index;
+      } else {
+        o.animate_a = index;
+        o.animate_a_option = a;
+      }
     } else if (a == "--poses") {
       o.poses_file = next("--poses file");
     } else if (a == "--seconds") {

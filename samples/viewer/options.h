@@ -35,6 +35,10 @@ struct Options {
   proxMethod method = PROX_METHOD_PRECISE;
   proxForcePreset force = PROX_FORCE_PRESET_HARD;
   proxToolMode tool_mode = PROX_TOOL_FREE;  // constrained: the tool never sinks in (docs/coupling.md)
+  // The glTF animation played on A (--animate) and on the tool's mesh B
+  // (--animate-b), as proxMesh_GetAnimationInfo numbers them; -1: none.
+  int animate_a = -1, animate_b = -1;
+  std::string animate_a_option = "--animate";  // as given (--animate or --animate-a), for messages
 };
 
 // Thrown for a bad command line; main prints it with the usage and exits 2.

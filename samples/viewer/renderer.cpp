@@ -264,6 +264,14 @@ void Renderer::set_meshes(const RenderMesh& a, const RenderMesh& tool) {
   if (!same_mesh_) upload(mesh_tool_, tool);
 }
 
+void Renderer::update_vertices(bool tool, const std::vector<float>& positions) {
+  GpuMesh& m = tool && !same_mesh_ ? mesh_tool_ : mesh_a_;
+  const VkDeviceSize bytes = positions.size() * sizeof(float);
+  if (bytes != m.vertices.size) throw VulkanError("update_vertices: the vertex count changed");
+  vk_.wait_frame();  // the frame in flight may still read them
+  std::memcpy(m.vertices.mapped, positions.data(), bytes);
+}
+
 void Renderer::reserve_lines(std::size_t points) {
   if (points <= lines_capacity_) return;
   vk_.wait_frame();  // the buffer may still be read by the frame in flight

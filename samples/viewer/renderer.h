@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include <functional>
+#include <vector>
 
 namespace viewer {
 
@@ -45,6 +46,9 @@ class Renderer {
   VkSampleCountFlagBits samples() const { return samples_; }
   // The two meshes (the same one twice when A is B).
   void set_meshes(const RenderMesh& a, const RenderMesh& tool);
+  // An animated mesh's new vertices (the count set_meshes gave), written
+  // into its mapped buffer once the frame in flight is done with it.
+  void update_vertices(bool tool, const std::vector<float>& positions);
   // Records the render pass into framebuffer fb.
   void record(VkCommandBuffer cmd, VkFramebuffer fb, VkExtent2D extent, const FrameInput& in);
 

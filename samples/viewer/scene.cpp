@@ -74,10 +74,23 @@ Scene::~Scene() {
 void Scene::build(const Options& options, const std::string& path_a, const std::string& path_b) {
   check(proxWorld_LoadMesh(world_, path_a.c_str(), &mesh_a_));
   mesh_b_ = mesh_a_;
-  if (path_b != path_a) check(proxWorld_LoadMesh(world_, path_b.c_str(), &mesh_b_));
+  // One file animated otherwise for A than for the tool is two meshes.
+  if (path_b != path_a || options.animate_b != options.animate_a)
+    check(proxWorld_LoadMesh(world_, path_b.c_str(), &mesh_b_));
   proxMeshInfo info_a, info_b;
   check(proxMesh_GetInfo(mesh_a_, &info_a));
   check(proxMesh_GetInfo(mesh_b_, &info_b));
+  if (options.animate_a >= 0)
+    animations_[0] = animation(mesh_a_, options.animate_a, options.animate_a_option, path_a);
+  if (options.animate_b >= 0 && !shares_mesh())
+    animations_[1] = animation(mesh_b_, options.animate_b, "--animate-b", path_b);
+  glm::dvec3 lo_a(info_a.boundsMin.x, info_a.boundsMin.y, info_a.boundsMin.z);
+  glm::dvec3 hi_a(info_a.boundsMax.x, info_a.boundsMax.y, info_a.boundsMax.z);
+  glm::dvec3 lo_b(info_b.boundsMin.x, info_b.boundsMin.y, info_b.boundsMin.z);
+  glm::dvec3 hi_b(info_b.boundsMax.x, info_b.boundsMax.y, info_b.boundsMax.z);
+  animated_bounds(animations_[0], &lo_a, &hi_a);
+  animated_bounds(animations_[1], &lo_b, &hi_b);
+  if (shares_mesh()) lo_b = lo_a, hi_b = hi_a;
 
   proxBodyDef body = proxDefaultBodyDef();
   body.mesh = mesh_a_;
@@ -154,12 +167,15 @@ void Scene::build(const Options& options, const std::string& path_a, const std::
     hid_ = attach_hid(world_, tool_, start, body.referencePoint);
   }
 
-  bounds_min_ = glm::dvec3(info_a.boundsMin.x, info_a.boundsMin.y, info_a.boundsMin.z);
-  bounds_max_ = glm::dvec3(info_a.boundsMax.x, info_a.boundsMax.y, info_a.boundsMax.z);
+  // The camera's box: A, and the tool at every pose it visits, each over its
+  // whole animation.
+  bounds_min_ = lo_a;
+  bounds_max_ = hi_a;
   for (const proxPose& pose : visited) {
     const glm::dmat4 m = matrix(pose);
     for (int corner = 0; corner < 8; ++corner) {
-      const glm::dvec3 c((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
+      const glm::dvec3 c((corner & 1) ? hi_b.x : lo_b.x, (corner & 2) ? hi_b.y : lo_b.y,
+                         (corner & 4) ? hi_b.z : lo_b.z);
       const glm::dvec3 w = glm::dvec3(m * glm::dvec4(c, 1.0));
       bounds_min_ = glm::min(bounds_min_, w);
       bounds_max_ = glm::max(bounds_max_, w);
@@ -312,6 +328,66 @@ std::vector<double> Scene::force_shares(const std::vector<proxContact>& contacts
   }
   for (double& x : w) x = sum > 0.0 ? x / sum : 0.0;
   return w;
+}
+
+Scene::Animation Scene::animation(proxMeshId mesh, int index, const std::string& option,
+                                  const std::string& path) const {
+  int32_t count = 0;
+  check(proxMesh_GetAnimationCount(mesh, &count));
+  const std::string given = option + " " + std::to_string(index) + ": " + path;
+  if (count == 0) throw SceneError(given + " has no animations");
+  if (index >= count)
+    throw SceneError(given + " has " + std::to_string(count) +
+                     (count == 1 ? " animation (index 0)"
+                                 : " animations (indices 0 to " + std::to_string(count - 1) + ")"));
+  proxAnimationInfo info;
+  check(proxMesh_GetAnimationInfo(mesh, index, &info));
+  return {mesh, index, info.start, std::max(0.0, info.duration - info.start)};
+}
+
+void Scene::animated_bounds(const Animation& a, glm::dvec3* lo, glm::dvec3* hi) {
+  if (a.index < 0) return;
+  *lo = glm::dvec3(HUGE_VAL);
+  *hi = glm::dvec3(-HUGE_VAL);
+  const int steps = std::clamp(static_cast<int>(std::ceil(a.length * 60.0)), 1, 600);
+  for (int s = steps; s >= 0; --s) {  // the last pose is the animation's start
+    check(proxMesh_Animate(a.mesh, a.index, a.start + a.length * s / steps));
+    read_positions(a.mesh);
+    for (std::size_t v = 0; v + 2 < positions_.size(); v += 3) {
+      const glm::dvec3 p(positions_[v], positions_[v + 1], positions_[v + 2]);
+      *lo = glm::min(*lo, p);
+      *hi = glm::max(*hi, p);
+    }
+  }
+}
+
+bool Scene::animate(double seconds) {
+  bool posed = false;
+  for (const Animation& a : animations_) {
+    if (a.index < 0) continue;
+    const double t = a.start + (a.length > 0.0 ? std::fmod(seconds, a.length) : 0.0);
+    check(proxMesh_Animate(a.mesh, a.index, t));
+    posed = true;
+  }
+  // Without threads the world answers at its steps: one on the new shape.
+  if (posed && !threads_) check(proxWorld_Step(world_));
+  return posed;
+}
+
+void Scene::read_positions(proxMeshId mesh) {
+  proxMeshInfo info;
+  check(proxMesh_GetInfo(mesh, &info));
+  positions_.resize(3 * std::size_t{info.vertexCount});
+  indices_.resize(3 * std::size_t{info.triangleCount});
+  uint32_t vertices = 0, triangles = 0;
+  check(proxMesh_GetTriangles(mesh, positions_.data(), info.vertexCount, &vertices, indices_.data(),
+                              info.triangleCount, &triangles));
+}
+
+void Scene::read_vertices(bool tool, std::vector<float>& positions) {
+  read_positions(tool ? mesh_b_ : mesh_a_);
+  positions.resize(positions_.size());
+  std::copy(positions_.begin(), positions_.end(), positions.begin());
 }
 
 RenderMesh Scene::render_mesh(bool tool) const {

@@ -71,8 +71,22 @@ class Scene {
   // The triangles of mesh A, or of the tool's mesh, to draw (the world's own,
   // welded: any file the library reads).
   RenderMesh render_mesh(bool tool) const;
+  // A and the tool use one mesh (the same file, not animated otherwise).
+  bool shares_mesh() const { return mesh_b_.index1 == mesh_a_.index1; }
 
-  // The box the camera frames: both bodies over the tool's whole path.
+  // --animate, --animate-b: poses the animated meshes at `seconds` since the
+  // animation started, each looping over its keyframes (proxMesh_Animate),
+  // and steps a world without threads so that its contacts are on the new
+  // shape. False (and nothing done) when no mesh is animated.
+  bool animate(double seconds);
+  bool animated() const { return animations_[0].index >= 0 || animations_[1].index >= 0; }
+  // The posed vertices of A or the tool's mesh into `positions` (x, y, z
+  // per vertex, the order render_mesh() gave), through buffers kept from
+  // call to call: no allocation after the first.
+  void read_vertices(bool tool, std::vector<float>& positions);
+
+  // The box the camera frames: both bodies over the tool's whole path, each
+  // over its whole animation.
   glm::dvec3 bounds_min() const { return bounds_min_; }
   glm::dvec3 bounds_max() const { return bounds_max_; }
   double cutoff() const { return cutoff_; }
@@ -85,6 +99,18 @@ class Scene {
  private:
   void build(const Options& options, const std::string& path_a, const std::string& path_b);
   double x_at_gap(double gap) const;
+  void read_positions(proxMeshId mesh);  // into positions_ (and indices_)
+  // Checks --animate's index against the file and keeps what playing it needs.
+  struct Animation {
+    proxMeshId mesh{};
+    int32_t index = -1;  // -1: not animated
+    double start = 0.0, length = 0.0;
+  };
+  Animation animation(proxMeshId mesh, int index, const std::string& option, const std::string& path) const;
+  // The mesh's box over its whole animation (sampled at 60 Hz, at most 601
+  // poses), left posed at the animation's start; its box as loaded when it
+  // is not animated.
+  void animated_bounds(const Animation& a, glm::dvec3* lo, glm::dvec3* hi);
   bool constrained_ = false;
 
   proxWorldId world_{};
@@ -97,6 +123,9 @@ class Scene {
   proxForceSettings force_{};
   glm::dvec3 reference_local_{0.0};
   glm::dvec3 bounds_min_{0.0}, bounds_max_{0.0};
+  Animation animations_[2];        // A's, the tool's (not when it shares A's mesh)
+  std::vector<double> positions_;  // proxMesh_GetTriangles' output, kept
+  std::vector<uint32_t> indices_;  // from frame to frame
 };
 
 }  // namespace viewer

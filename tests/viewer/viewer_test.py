@@ -18,6 +18,7 @@ import tempfile
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gltf_pose  # noqa: E402
 import png  # noqa: E402
 import sanitizers  # noqa: E402
 
@@ -317,6 +318,87 @@ class ViewerGltfTest(unittest.TestCase):
         self.assertEqual([p for p in diff if not inside(p)], [], "pixels drawn outside both boxes' projections")
 
 
+def coverage(sidecar, triangles, margin):
+    """Pixels whose centre lies inside a projected triangle by more than `margin` px (negative: within
+    -margin px outside it)."""
+    w, h = sidecar["viewport"]
+    out = set()
+    for tri in triangles:
+        p = [project(sidecar, v)[:2] for v in tri]
+        area = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0])
+        if area == 0:
+            continue
+        edges = []
+        for a, b in ((p[0], p[1]), (p[1], p[2]), (p[2], p[0])):
+            length = math.hypot(b[0] - a[0], b[1] - a[1])
+            edges.append((a, b, length, 1.0 if area > 0 else -1.0))
+        x0, x1 = int(max(0, min(q[0] for q in p) - 2)), int(min(w - 1, max(q[0] for q in p) + 2))
+        y0, y1 = int(max(0, min(q[1] for q in p) - 2)), int(min(h - 1, max(q[1] for q in p) + 2))
+        for y in range(y0, y1 + 1):
+            for x in range(x0, x1 + 1):
+                c = (x + 0.5, y + 0.5)
+                if all(length > 0 and sign * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / length
+                       > margin for a, b, length, sign in edges):
+                    out.add((x, y))
+    return out
+
+
+class ViewerAnimationTest(unittest.TestCase):
+    def check_played(self, tool):
+        # AnimatedMorphCube (a 2 m cube; its first morph target flattens it along world z, its weight 1 at
+        # 1.6 s) playing animation 0 with Box.glb, the tool 4 m along x: the cube as A (--animate) or as the
+        # tool (--animate-b). Headless, frames are 1/60 s apart: frame 0 is the cube at rest, frame 96 the
+        # flat one. The oracle poses the file here.
+        cube, box = os.path.join(ASSETS, "gltf", "AnimatedMorphCube.glb"), os.path.join(ASSETS, "gltf", "Box.glb")
+        args = (box, cube, "--animate-b", "0") if tool else (cube, box, "--animate", "0")
+        shift = 4.0 if tool else 0.0
+        oracle = gltf_pose.Gltf(cube)
+
+        def triangles(*at):
+            return [tuple((v[0] + shift, v[1], v[2]) for v in tri) for tri in oracle.triangles(*at)]
+
+        frames = (0, 96)
+        with tempfile.TemporaryDirectory() as d:
+            r = run(*args, "--pose-b", "4", "0", "0", "1", "0", "0", "0", "--headless", "--validation", "--frames",
+                    str(frames[-1] + 1), "--size", f"{SIZE[0]}x{SIZE[1]}", "--msaa", "1", "--show", "meshes", "--out", d)
+            self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+            self.assertNotRegex(r.stderr, VALIDATION)
+            shots = {}
+            for i in frames:
+                with open(os.path.join(d, f"frame-{i:04d}.json")) as f:
+                    shots[i] = (png.read(os.path.join(d, f"frame-{i:04d}.png")), json.load(f))
+        # The camera holds the cube over its whole animation (4.2 s): every posed vertex is in the frame.
+        for k in range(0, 253, 6):
+            for tri in triangles(0, k / 60):
+                for v in tri:
+                    x, y, z = project(shots[0][1], v)
+                    self.assertTrue(0 <= x < SIZE[0] and 0 <= y < SIZE[1] and 0 < z < 1, f"{v} at {k / 60} s")
+        rest = triangles()
+        drawn = {}
+        for i in frames:
+            image, sidecar = shots[i]
+            posed = triangles(0, i / 60)
+            # The cube's pixels (A warm grey, the tool blue): all of the posed cube's inside, nothing outside
+            # it (pixel centres within 0.75 px of an edge may go either way).
+            drawn[i] = {(x, y) for y in range(image.height) for x in range(image.width)
+                        if (image.pixel(x, y)[2] > image.pixel(x, y)[0]) == tool and image.pixel(x, y) !=
+                        tuple(sidecar["background"])}
+            inside, hull = coverage(sidecar, posed, 0.75), coverage(sidecar, posed, -0.75)
+            self.assertGreater(len(inside), 3000)
+            self.assertEqual(inside - drawn[i], set(), f"frame {i}: pixels of the posed mesh not drawn")
+            self.assertEqual(drawn[i] - hull, set(), f"frame {i}: pixels drawn outside the posed mesh")
+            if i:
+                # Where the cube was at rest and no longer is: the rest pose drawn would fail above.
+                self.assertGreater(len(coverage(sidecar, rest, 0.75) - hull), 3000)
+        self.assertGreater(len(drawn[0] ^ drawn[96]), 3000, "the silhouette did not change")
+
+    def test_the_animated_mesh_is_drawn_as_posed(self):
+        self.check_played(tool=False)
+
+    def test_the_animated_tool_is_drawn_as_posed(self):
+        self.check_played(tool=True)
+
+
 class ViewerConstrainedTest(unittest.TestCase):
     def test_the_constrained_tool_stays_out_and_its_device_pose_is_a_ghost(self):
         # The scripted device goes from 0.3 m out to x = 0.1, where the bunnies cross, and holds there;
@@ -432,6 +514,7 @@ class ViewerRunTest(unittest.TestCase):
 
     def test_bad_input_gets_a_clear_error(self):
         bunny = os.path.join(ASSETS, "bunny.obj")
+        cube = os.path.join(ASSETS, "gltf", "AnimatedMorphCube.glb")
         with tempfile.TemporaryDirectory() as d:
             missing = os.path.join(d, "missing.obj")
             broken = os.path.join(d, "broken.gltf")
@@ -450,6 +533,10 @@ class ViewerRunTest(unittest.TestCase):
                 ((bunny,), 2, "two meshes"),
                 (("--poses", missing, "--headless"), 1, "missing.obj"),
                 (("--out", d, "--frames", "2"), 2, "--headless"),
+                (("--animate", "x"), 2, "--animate"),
+                ((cube, bunny, "--animate", "1", "--headless"), 1, "--animate 1: " + cube + " has 1 animation"),
+                ((cube, bunny, "--animate-b", "0", "--headless"), 1, "--animate-b 0: " + bunny + " has no animations"),
+                (("--animate", "0", "--headless"), 1, "has no animations"),
             ]
             for args, code, text in cases:
                 with self.subTest(args=args):
@@ -476,7 +563,7 @@ class ViewerRunTest(unittest.TestCase):
         r = run("--help")
         self.assertEqual(r.returncode, 0)
         for option in ("--pose-b", "--cutoff", "--headless", "--frames", "--out", "--size", "--show", "--validation",
-                       "--device", "--poses", "--method", "--force", "auto"):
+                       "--device", "--poses", "--method", "--force", "auto", "--animate", "--animate-b"):
             self.assertIn(option, r.stdout)
 
 
