@@ -6,8 +6,8 @@ namespace Proxima.Unity
     /// <summary>The scene's Proxima world. Stepped: one deterministic step per frame
     /// in LateUpdate, after the bodies and tools have sent their poses in Update.
     /// Threaded: the haptic loop (1 kHz), local tracking and the global search run
-    /// on Proxima's threads from the first LateUpdate on; bodies and tools must
-    /// then all exist (the scene's shape is frozen while the threads run).</summary>
+    /// on Proxima's threads from the first LateUpdate on; bodies and tools may
+    /// come and go, and meshes deform, while they run (docs/dynamic-scenes.md).</summary>
     [DisallowMultipleComponent]
     [DefaultExecutionOrder(-100)]
     [AddComponentMenu("Proxima/Proxima World")]
