@@ -12,6 +12,8 @@ set(PROX_MINGW_TRIPLE x86_64-w64-mingw32 CACHE STRING "The MinGW-w64 target trip
 find_program(CMAKE_C_COMPILER NAMES ${PROX_MINGW_TRIPLE}-gcc-posix ${PROX_MINGW_TRIPLE}-gcc REQUIRED)
 find_program(CMAKE_CXX_COMPILER NAMES ${PROX_MINGW_TRIPLE}-g++-posix ${PROX_MINGW_TRIPLE}-g++ REQUIRED)
 find_program(CMAKE_RC_COMPILER NAMES ${PROX_MINGW_TRIPLE}-windres)
+# Makes proxima.lib, MSVC's import library, from the DLL's exports.
+find_program(CMAKE_DLLTOOL NAMES ${PROX_MINGW_TRIPLE}-dlltool)
 
 list(APPEND CMAKE_FIND_ROOT_PATH /usr/${PROX_MINGW_TRIPLE})
 list(REMOVE_DUPLICATES CMAKE_FIND_ROOT_PATH)
