@@ -79,7 +79,7 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/proxima.pc.in ${CMAKE_CURRENT_BINARY_DI
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/proxima.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
   COMPONENT development)
 
-# Windows (docs/install.md#windows): MSVC links with proxima.lib, an import
+# Windows (docs/install.md, "Windows"): MSVC links with proxima.lib, an import
 # library made from the DLL's exports (sdk/CMakeLists.txt); MinGW with the
 # libproxima.dll.a the export above installs.
 if(WIN32 AND TARGET proxima_msvc_import_lib)

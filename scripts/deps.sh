@@ -41,7 +41,7 @@ INSTALL_PACKAGES=(pkg-config dpkg-dev file)
 # API and run under umockdev-wrapper.
 HID_PACKAGES=(libhidapi-dev pkg-config libumockdev-dev umockdev)
 
-# The Windows build (scripts/windows.sh, docs/install.md#windows): MinGW-w64's
+# The Windows build (scripts/windows.sh, docs/install.md, "Windows"): MinGW-w64's
 # compilers with POSIX threads (std::thread) and its binutils (objdump,
 # dlltool), Wine to run the cross-built tests and hello, and GoogleTest's
 # sources (googletest), cross-built for the tests.
