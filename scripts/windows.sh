@@ -53,10 +53,12 @@ suites=(proxima_capi_tests proxima_capi_threads_tests proxima_capi_stream_tests 
 cmake --build "$out/build" -j "$jobs" --target proxima_capi proxima_msvc_import_lib "${suites[@]}" \
   proxima_header_c11 proxima_header_parts_c11 hello
 
-# The DLL exports exactly the C API: the PROX_API functions of the headers
-# it installs (proxima_hid.h is not among them: no HID on Windows).
+# The DLL exports exactly the C API: the PROX_API functions of every public
+# header but proxima_hid.h (no HID on Windows).
 dll=$out/build/bin/proxima.dll
-grep -hoE '^PROX_API [^(]+\(' sdk/include/proxima/{proxima,threads,inspect,proxima_openxr}.h |
+headers=$(ls sdk/include/proxima/*.h | grep -v '/proxima_hid\.h$')
+# shellcheck disable=SC2086
+grep -hoE '^PROX_API [^(]+\(' $headers |
   sed -E 's/.*[ *]([A-Za-z0-9_]+)\($/\1/' | sort >"$out/api.txt"
 x86_64-w64-mingw32-objdump -p "$dll" | sed -n '/\[Ordinal\/Name Pointer\] Table/,/^$/p' |
   awk '/^[ \t]*\[ *[0-9]+\]/ {print $NF}' | sort >"$out/exports.txt"
