@@ -79,6 +79,14 @@ configure_file(${CMAKE_CURRENT_LIST_DIR}/proxima.pc.in ${CMAKE_CURRENT_BINARY_DI
 install(FILES ${CMAKE_CURRENT_BINARY_DIR}/proxima.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
   COMPONENT development)
 
+# Windows (docs/install.md, "Windows"): MSVC links with proxima.lib, an import
+# library made from the DLL's exports (sdk/CMakeLists.txt); MinGW with the
+# libproxima.dll.a the export above installs.
+if(WIN32 AND TARGET proxima_msvc_import_lib)
+  install(FILES ${PROJECT_BINARY_DIR}/sdk/proxima.lib ${PROJECT_BINARY_DIR}/sdk/proxima.def
+          DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development)
+endif()
+
 # CPack: `cpack -G DEB` in the build directory makes
 # proxima_VERSION_ARCH-libproxima0.deb and proxima_VERSION_ARCH-libproxima-dev.deb
 # (the Debian package names are libproxima0 and libproxima-dev).
@@ -87,7 +95,15 @@ set(CPACK_PACKAGE_VENDOR "Proxima")
 set(CPACK_PACKAGE_CONTACT "Proxima maintainers <proxima@invalid>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Multi-contact proximity haptics SDK")
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
-set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+if(WIN32)
+  # `cpack` makes proxima-VERSION-win64.zip: bin/proxima.dll, lib/ (the
+  # import libraries, the CMake package), include/.
+  set(CPACK_GENERATOR ZIP)
+  set(CPACK_PACKAGE_FILE_NAME "proxima-${PROJECT_VERSION}-win64")
+  set(CPACK_ARCHIVE_COMPONENT_INSTALL OFF)
+else()
+  set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+endif()
 set(CPACK_DEB_COMPONENT_INSTALL ON)
 set(CPACK_COMPONENTS_ALL runtime development)
 set(CPACK_DEBIAN_PACKAGE_SECTION libs)

@@ -41,6 +41,12 @@ INSTALL_PACKAGES=(pkg-config dpkg-dev file)
 # API and run under umockdev-wrapper.
 HID_PACKAGES=(libhidapi-dev pkg-config libumockdev-dev umockdev)
 
+# The Windows build (scripts/windows.sh, docs/install.md, "Windows"): MinGW-w64's
+# compilers with POSIX threads (std::thread) and its binutils (objdump,
+# dlltool), Wine to run the cross-built tests and hello, and GoogleTest's
+# sources (googletest), cross-built for the tests.
+WINDOWS_PACKAGES=(g++-mingw-w64-x86-64-posix binutils-mingw-w64-x86-64 wine64 googletest)
+
 # The fuzz targets (tests/fuzz): clang with libFuzzer and the sanitizer runtimes.
 FUZZ_PACKAGES=(clang libclang-rt-14-dev libfuzzer-14-dev)
 

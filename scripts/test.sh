@@ -2,7 +2,8 @@
 # Builds everything and runs every test: the core alone (optional parts off),
 # an AddressSanitizer + UndefinedBehaviorSanitizer build of the whole suite, a
 # ThreadSanitizer build of the threaded tests, the benchmarks once (so they
-# never rot), and the release suite last.
+# never rot), the release suite, the Windows build under Wine, and the
+# Python bindings last.
 # Works on a fresh Debian 12 machine; installs the packages it needs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,6 +23,9 @@ need_packages "${HID_PACKAGES[@]}"
 # packages for real only on CI's throwaway machines (docs/install.md).
 need_packages "${INSTALL_PACKAGES[@]}"
 [ -n "${CI:-}" ] && export PROX_DEB_SYSTEM_INSTALL=${PROX_DEB_SYSTEM_INSTALL:-1}
+
+# The Windows build (scripts/windows.sh): MinGW-w64, Wine, GoogleTest's sources.
+need_packages "${WINDOWS_PACKAGES[@]}"
 
 jobs=$(nproc)
 # Each stage says when it starts, so a slow CI run shows where its time went
@@ -86,6 +90,9 @@ build/release/bench/proxima_patches_bench --runs 1 >/dev/null
 build/release/bench/proxima_fidelity_bench --scene bunny --speeds 50 >/dev/null
 build/release/bench/proxima_deform_bench --frames 2 --churn-seconds 0.5 >/dev/null
 ctest --test-dir build/release --output-on-failure -j "$jobs"
+
+stage "Windows: proxima.dll cross-built with MinGW-w64, its suites and the zip's hello under Wine (scripts/windows.sh)"
+scripts/windows.sh
 
 stage "Python bindings (bindings/python): pip install into a fresh venv, then pytest"
 # Pinned PyPI versions: bindings/python/ci-constraints.txt. The contacts are

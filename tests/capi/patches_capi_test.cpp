@@ -147,7 +147,7 @@ TEST_F(Patches, EachContactSaysWhatItsPatchHolds) {
     EXPECT_GE(p.spread, 0.0);
     EXPECT_LE(p.spread, 0.002 * cutoff + kRounding) << i;
     EXPECT_GE(p.angle, 0.0);
-    EXPECT_LE(p.angle, 5.0 * M_PI / 180.0 + 1e-9) << i;
+    EXPECT_LE(p.angle, 5.0 * 3.14159265358979323846 / 180.0 + 1e-9) << i;
     if (p.count == 1) {
       EXPECT_EQ(p.extent, 0.0) << i;
     }

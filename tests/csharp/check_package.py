@@ -72,7 +72,7 @@ def main():
         dirs[:] = [x for x in dirs if not x.startswith(".")]
         for name in dirs + files:
             rel = os.path.relpath(os.path.join(d, name), pkg)
-            if name.startswith(".") or rel == "Samples~" or name.startswith("libproxima.so"):
+            if name.startswith(".") or rel == "Samples~" or name.startswith(("libproxima.so", "proxima.dll")):
                 continue
             if name.endswith(".meta"):
                 check(os.path.exists(os.path.join(d, name[:-5])), rel + " has its asset")
@@ -96,6 +96,21 @@ def main():
     check(editor is not None and editor.groups() == ("1", "x86_64", "Linux"), "the plugin loads in the Linux x86_64 editor")
     player = re.search(r"Standalone: Linux64\n    second:\n      enabled: (\d)\n      settings:\n        CPU: (\w+)", text)
     check(player is not None and player.groups() == ("1", "x86_64"), "the plugin ships in Linux x86_64 players")
+    check(re.search(r"Standalone: Win64\n    second:\n      enabled: 1", text) is None,
+          "libproxima.so is not enabled for Windows players")
+
+    # proxima.dll (scripts/windows.sh; fill_plugins.sh copies it in): the
+    # Windows x86_64 editor and players, nothing else.
+    dll_meta = os.path.join(pkg, "Runtime", "Plugins", "x86_64", "proxima.dll.meta")
+    check(os.path.exists(dll_meta), "the Windows plugin has a .meta")
+    text = open(dll_meta).read() if os.path.exists(dll_meta) else ""
+    check("PluginImporter:" in text, "proxima.dll's .meta is a PluginImporter")
+    editor = re.search(r"Editor: Editor\n    second:\n      enabled: (\d)\n      settings:\n        CPU: (\w+)\n"
+                       r"        DefaultValueInitialized: true\n        OS: (\w+)", text)
+    check(editor is not None and editor.groups() == ("1", "x86_64", "Windows"),
+          "proxima.dll loads in the Windows x86_64 editor")
+    enabled = re.findall(r"Standalone: (\w+)\n    second:\n      enabled: 1\n      settings:\n        CPU: (\w+)", text)
+    check(enabled == [("Win64", "x86_64")], "proxima.dll ships in Windows x86_64 players only (%s)" % enabled)
 
     print(f"{passed} passed, {len(failures)} failed")
     return 1 if failures else 0

@@ -91,6 +91,7 @@ int main(void) {
   OFFSET(proxThreadStats, targetRate);
   OFFSET(proxThreadStats, periodP999);
   OFFSET(proxThreadStats, timing);
+  OFFSET(proxThreadStats, sleepTimer);
   OFFSET(proxMeshStats, hierarchyBytes);
   OFFSET(proxSearchStats, nodePairs);
   OFFSET(proxTrackStats, distanceEvaluations);

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <new>
 
-#if !defined(__SANITIZE_THREAD__)
+#if !defined(__SANITIZE_THREAD__) && !defined(_WIN32)
 #include <dlfcn.h>
 #include <pthread.h>
 #endif
@@ -34,7 +34,7 @@ void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
-#if !defined(__SANITIZE_THREAD__)
+#if !defined(__SANITIZE_THREAD__) && !defined(_WIN32)
 namespace {
 using LockFn = int (*)(pthread_mutex_t*);
 // Looked up at the first lock, not by a static initialiser: preloaded

@@ -22,9 +22,19 @@ std::size_t marked_largest_allocation();
 // Back to zero (between tests of one program, after checking that the
 // counting sees the library's own calls).
 void reset_marked_counts();
-// Whether mutex locks are counted in this build (not under ThreadSanitizer).
+// Whether mutex locks are counted in this build (not under ThreadSanitizer,
+// nor on Windows, where no function of another DLL can be replaced).
 constexpr bool kCountsLocks =
-#if defined(__SANITIZE_THREAD__)
+#if defined(__SANITIZE_THREAD__) || defined(_WIN32)
+    false;
+#else
+    true;
+#endif
+// Whether the counting sees what the shared library does: not on Windows,
+// where proxima.dll has its own operator new, which the program's does not
+// replace.
+constexpr bool kSeesLibrary =
+#if defined(_WIN32)
     false;
 #else
     true;

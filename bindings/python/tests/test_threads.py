@@ -122,6 +122,8 @@ def test_timing_settings_reach_the_haptic_loop(world, bunny):
         stats = world.thread_stats("haptic")
         assert stats.timing == timing and stats.memory_locked is False and stats.realtime_priority == 0
         assert stats.period_p50 <= stats.period_p999 <= stats.period_max
+        # What its sleeps waited on, by the header's name (the wheel is Linux's).
+        assert stats.sleep_timer == "system"
 
 
 def test_the_flight_recorder_keeps_what_the_device_was_handed(world, bunny):

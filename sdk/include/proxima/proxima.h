@@ -38,11 +38,13 @@ extern "C" {
 #endif
 
 /* Overridable, so that tools that parse the header (the Python binding's
- * cffi build) can define it away. */
+ * cffi build) can define it away. On Windows proxima.dll exports the API
+ * (PROX_BUILDING_SHARED, set by its build) and every other program imports
+ * it from there. */
 #ifndef PROX_API
 #if defined(_WIN32) && defined(PROX_BUILDING_SHARED)
 #define PROX_API __declspec(dllexport)
-#elif defined(_WIN32) && defined(PROX_USING_SHARED)
+#elif defined(_WIN32)
 #define PROX_API __declspec(dllimport)
 #elif defined(__GNUC__)
 #define PROX_API __attribute__((visibility("default")))

@@ -22,6 +22,15 @@ typedef enum proxHapticTiming {
   PROX_TIMING_FORCE32 = 0x7FFFFFFF
 } proxHapticTiming;
 
+/* What the haptic loop's sleeps wait on (proxThreadStats.sleepTimer), as the
+ * system allowed (docs/threading.md, "Keeping the beat"). */
+typedef enum proxSleepTimer {
+  PROX_SLEEP_TIMER_SYSTEM = 0,          /* the system's own: Linux's futex wait on high-resolution timers */
+  PROX_SLEEP_TIMER_HIGH_RESOLUTION = 1, /* Windows 10 1803+: a high-resolution waitable timer */
+  PROX_SLEEP_TIMER_PERIOD_1MS = 2,      /* older Windows: a waitable timer, timeBeginPeriod(1) while the loop runs */
+  PROX_SLEEP_TIMER_FORCE32 = 0x7FFFFFFF
+} proxSleepTimer;
+
 typedef struct proxThreadsDef {
   double hapticRate; /* Hz, in [1, 100000]: the haptic loop (default 1000) */
   double localRate;  /* Hz, 0 or >= 1: local tracking (default 1000; 0: back to back) */
@@ -41,13 +50,16 @@ typedef struct proxThreadsDef {
   proxHapticTiming hapticTiming; /* default PROX_TIMING_AUTO */
   /* SCHED_FIFO priority (1-99) asked for the haptic thread; 0 (the default):
    * none. Needs root, CAP_SYS_NICE or an RLIMIT_RTPRIO of at least it; a
-   * refusal is reported in proxThreadStats, never an error. */
+   * refusal is reported in proxThreadStats, never an error. On Windows any
+   * priority asks for THREAD_PRIORITY_TIME_CRITICAL (and MMCSS's "Pro
+   * Audio" task where that service runs). */
   int32_t hapticPriority;
   double spinMargin;     /* s, in [0, the haptic period]: PROX_TIMING_SPIN's spin (default 0.0002) */
   int32_t localPriority; /* the same for the local tracking thread (default 0) */
-  /* Lock the process's memory (mlockall(MCL_CURRENT)) once the threads
-   * run, so no page the haptic loop touches is paged out. Process-wide and
-   * never undone by Proxima; reported in proxThreadStats. Default 0. */
+  /* Lock the process's memory (mlockall(MCL_CURRENT); Windows: VirtualLock
+   * on every committed region) once the threads run, so no page the haptic
+   * loop touches is paged out. Process-wide and never undone by Proxima;
+   * reported in proxThreadStats. Default 0. */
   proxBool lockMemory;
   int32_t internalValue;
   /* The flight recorder: keep each tool's last this many haptic ticks for
@@ -88,12 +100,13 @@ typedef struct proxThreadStats {
   uint64_t updates;
   uint64_t overruns;        /* iterations that missed the next period's start */
   double periodP999;        /* s: the 99.9th percentile of the period */
-  int32_t realtimePriority; /* the SCHED_FIFO priority granted; 0: none asked, or refused */
+  int32_t realtimePriority; /* the SCHED_FIFO priority granted (Windows: the one asked, granted as
+                             * TIME_CRITICAL); 0: none asked, or refused */
   int32_t realtimeError;    /* the errno that refused it (1, EPERM: no privilege); 0 */
   proxBool memoryLocked;    /* haptic thread's stats: lockMemory was granted */
   int32_t memoryLockError;  /* ... or the errno that refused it (ENOMEM, EPERM: RLIMIT_MEMLOCK); 0 */
   proxHapticTiming timing;  /* haptic thread's stats: SPIN or SLEEP, as AUTO resolved */
-  int32_t reserved;
+  proxSleepTimer sleepTimer; /* haptic thread's stats: what its sleeps wait on */
 } proxThreadStats;
 
 /* Game thread. */

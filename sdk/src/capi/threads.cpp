@@ -117,6 +117,7 @@ proxResult proxWorld_GetThreadStats(proxWorldId world, proxThread thread, proxTh
       stats->memoryLockError = t->memory_lock_error();
       stats->timing =
           t->haptic_timing() == runtime::HapticTiming::Spin ? PROX_TIMING_SPIN : PROX_TIMING_SLEEP;
+      stats->sleepTimer = static_cast<proxSleepTimer>(t->sleep_timer());
     }
   });
 }

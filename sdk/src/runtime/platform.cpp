@@ -1,3 +1,4 @@
+// Linux and other POSIX systems; Windows: platform_windows.cpp.
 #include "runtime/platform.h"
 
 #include <algorithm>
@@ -100,6 +101,8 @@ void sleep_until(const std::atomic<int>& word, Clock::time_point deadline) {
   }
 #endif
 }
+
+SleepTimer prepare_precise_waits() { return SleepTimer::System; }
 
 void wake_all(std::atomic<int>& word) {
 #if defined(__linux__)

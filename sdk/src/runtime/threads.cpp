@@ -176,6 +176,10 @@ void Threads::configure(Role role) {
   const int core = settings_.cores[r];
   const int priority = role == Role::Global ? 0 : settings_.realtime_priority[r];
   if (core >= 0 && platform::pin_current_thread(core)) pinned_[r].store(core);
+  // The thread's precise wait is set up here, before the loop (on Windows
+  // it is a timer the thread keeps, allocated once).
+  const platform::SleepTimer sleep_timer = platform::prepare_precise_waits();
+  if (role == Role::Haptic) sleep_timer_.store(int(sleep_timer));
   if (priority > 0) {
     const int error = platform::set_current_thread_realtime(priority);
     priority_[r].store(error == 0 ? priority : 0);

@@ -146,6 +146,9 @@ class Threads {
   // Spin or Sleep, as the haptic thread resolved Auto when it started.
   HapticTiming haptic_timing() const { return timing_.load(std::memory_order_relaxed); }
   int memory_lock_error() const { return memory_lock_error_.load(std::memory_order_relaxed); }
+  // How the haptic thread's sleeps wait (platform::SleepTimer's values), as
+  // it found when it started.
+  int sleep_timer() const { return sleep_timer_.load(std::memory_order_relaxed); }
   // CPU seconds a running thread has used so far (its own clock); -1 when
   // the system cannot tell. For benchmarks: what a timing mode costs.
   double cpu_seconds(Role role) const;
@@ -304,6 +307,7 @@ class Threads {
   std::atomic<bool> memory_locked_{false};
   std::atomic<HapticTiming> timing_{HapticTiming::Sleep};
   std::atomic<int> memory_lock_error_{0};
+  std::atomic<int> sleep_timer_{0};
   LoopStats loop_stats_[3];
   std::atomic<std::uint64_t> invalid_poses_{0}, stale_ticks_{0}, untrusted_ticks_{0}, limited_ticks_{0},
       torn_snapshots_{0}, dropped_contacts_{0};

@@ -172,6 +172,17 @@ namespace Proxima
         Sleep = 2,
     }
 
+    /// <summary>What the haptic loop's sleeps wait on (proxSleepTimer).</summary>
+    public enum SleepTimer
+    {
+        /// <summary>The system's own: Linux's futex wait on high-resolution timers.</summary>
+        System = 0,
+        /// <summary>Windows 10 1803+: a high-resolution waitable timer.</summary>
+        HighResolution = 1,
+        /// <summary>Older Windows: a waitable timer, timeBeginPeriod(1) while the loop runs.</summary>
+        Period1ms = 2,
+    }
+
     /// <summary>One of the world's own threads (proxThread).</summary>
     public enum ThreadRole { Haptic = 0, Local = 1, Global = 2 }
 
@@ -419,12 +430,12 @@ namespace Proxima
         public ulong Updates;
         public ulong Overruns;
         public double PeriodP999;      // s
-        public int RealtimePriority;   // the SCHED_FIFO priority granted; 0: none asked, or refused
+        public int RealtimePriority;   // the SCHED_FIFO priority granted (Windows: as TIME_CRITICAL); 0: none asked, or refused
         public int RealtimeError;      // the errno that refused it; 0
         public Bool32 MemoryLocked;    // haptic thread: LockMemory was granted
         public int MemoryLockError;    // ... or the errno that refused it; 0
         public HapticTiming Timing;    // haptic thread: Spin or Sleep, as Auto resolved
-        readonly int reserved;
+        public SleepTimer SleepTimer;  // haptic thread: what its sleeps wait on
     }
 
     /// <summary>proxSafetyStats: the haptic loop's safety decisions, in ticks over all tools.</summary>

@@ -136,6 +136,7 @@ namespace Proxima.Tests
             new object[] { "proxThreadStats.targetRate", typeof(ThreadStats), "TargetRate" },
             new object[] { "proxThreadStats.periodP999", typeof(ThreadStats), "PeriodP999" },
             new object[] { "proxThreadStats.timing", typeof(ThreadStats), "Timing" },
+            new object[] { "proxThreadStats.sleepTimer", typeof(ThreadStats), "SleepTimer" },
             new object[] { "proxMeshStats.hierarchyBytes", typeof(MeshStats), "HierarchyBytes" },
             new object[] { "proxSearchStats.nodePairs", typeof(SearchStats), "NodePairs" },
             new object[] { "proxTrackStats.distanceEvaluations", typeof(TrackStats), "DistanceEvaluations" },
