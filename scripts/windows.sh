@@ -77,6 +77,12 @@ step "the test suites under Wine"
 [ -f "$WINEPREFIX/system.reg" ] || "$wine" wineboot -i >/dev/null 2>&1
 tests=("${suites[@]}" capi.header_c11 capi.header_parts_c11)
 names=$(printf '%s|' "${tests[@]}")
+# What the hand feels tick by tick (Fidelity.*) depends on how well the loops
+# keep time, which is Wine's here, not Windows': those tests run on Linux
+# (under load, and under ThreadSanitizer) and are left out under Wine, where
+# a late wake-up on a busy machine made a contact go stale once in a dozen
+# runs. Every other test of the suites runs.
+export GTEST_FILTER='-Fidelity.*'
 ctest --test-dir "$out/build" --output-on-failure -j "$jobs" -R "^(${names%|})$" --timeout 900 |
   tee "$out/ctest.log"
 grep -q "100% tests passed, 0 tests failed out of ${#tests[@]}\$" "$out/ctest.log" ||
