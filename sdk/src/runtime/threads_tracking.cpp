@@ -175,6 +175,10 @@ void Threads::track(Tool& tool, const ToolSet& set, std::vector<const LmdPair*>&
   tool.snapshots.publish();
   if (s.dropped) count(dropped_contacts_, s.dropped);
 
+  // Until the first global result local tracking has nothing to say: the
+  // game thread keeps reading the contacts the tool started with (a step's),
+  // rather than an empty set for a moment.
+  if (!tool.anchored) return;
   std::lock_guard<std::mutex> lock(results_mutex_);
   tool.contacts.clear();
   for (const LocalPair& lp : tool.local_pairs)
