@@ -7,14 +7,13 @@
 #include <gtest/gtest.h>
 
 #include "expect.h"
-#include "two_cubes.h"
+#include "lone_tool.h"
 
 #include <cerrno>
 #include <cstdio>
 
 namespace {
 
-using capi_test::at;
 using capi_test::wait_until;
 
 const char* timer_name(proxSleepTimer timer) {
@@ -30,28 +29,8 @@ const char* timer_name(proxSleepTimer timer) {
   }
 }
 
-class SleepTimer : public ::testing::Test {
+class SleepTimer : public capi_test::LoneTool {
  protected:
-  void SetUp() override {
-    const proxWorldDef def = proxDefaultWorldDef();
-    ASSERT_OK(proxCreateWorld(&def, &world));
-    const double p[] = {0, 0, 0, 0.1, 0, 0, 0, 0.1, 0};
-    const uint32_t tri[] = {0, 1, 2};
-    proxMeshDef md = proxDefaultMeshDef();
-    md.positions = p;
-    md.vertexCount = 3;
-    md.indices = tri;
-    md.triangleCount = 1;
-    ASSERT_OK(proxWorld_CreateMesh(world, &md, &mesh));
-    proxBodyDef bd = proxDefaultBodyDef();
-    bd.mesh = mesh;
-    bd.type = PROX_BODY_TOOL;
-    bd.pose = at(1.0);
-    ASSERT_OK(proxWorld_CreateBody(world, &bd, &tool));
-  }
-  void TearDown() override {
-    if (proxWorld_IsValid(world)) EXPECT_OK(proxDestroyWorld(world));
-  }
   // Runs the threads until the haptic loop has ticked `ticks` times; its stats.
   proxThreadStats run(const proxThreadsDef& def, uint64_t ticks) {
     proxThreadStats s{};
@@ -65,9 +44,6 @@ class SleepTimer : public ::testing::Test {
     EXPECT_OK(proxWorld_StopThreads(world));
     return s;
   }
-  proxWorldId world{};
-  proxMeshId mesh{};
-  proxBodyId tool{};
 };
 
 TEST_F(SleepTimer, TheHapticLoopSaysWhatItsSleepsWaitOn) {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "expect.h"
+#include "lone_tool.h"
 
 #include <atomic>
 #include <chrono>
@@ -25,8 +26,6 @@
 #include <cerrno>
 
 namespace {
-
-proxPose at(double x) { return {{x, 0, 0}, {1, 0, 0, 0}}; }
 
 // Takes CAP_SYS_NICE and CAP_IPC_LOCK out of the calling thread's effective
 // set and lowers its soft RLIMIT_RTPRIO and RLIMIT_MEMLOCK, so that neither a
@@ -77,28 +76,8 @@ int probe_realtime(int priority) {
   return error;
 }
 
-class Timing : public ::testing::Test {
+class Timing : public capi_test::LoneTool {
  protected:
-  void SetUp() override {
-    const proxWorldDef def = proxDefaultWorldDef();
-    ASSERT_OK(proxCreateWorld(&def, &world));
-    const double p[] = {0, 0, 0, 0.1, 0, 0, 0, 0.1, 0};
-    const uint32_t tri[] = {0, 1, 2};
-    proxMeshDef md = proxDefaultMeshDef();
-    md.positions = p;
-    md.vertexCount = 3;
-    md.indices = tri;
-    md.triangleCount = 1;
-    ASSERT_OK(proxWorld_CreateMesh(world, &md, &mesh));
-    proxBodyDef bd = proxDefaultBodyDef();
-    bd.mesh = mesh;
-    bd.type = PROX_BODY_TOOL;
-    bd.pose = at(1.0);
-    ASSERT_OK(proxWorld_CreateBody(world, &bd, &tool));
-  }
-  void TearDown() override {
-    if (proxWorld_IsValid(world)) EXPECT_OK(proxDestroyWorld(world));
-  }
   // Runs the threads for `seconds` and returns the haptic thread's stats.
   proxThreadStats run(const proxThreadsDef& def, double seconds, proxThreadStats* local = nullptr) {
     proxThreadStats s{};
@@ -110,9 +89,6 @@ class Timing : public ::testing::Test {
     EXPECT_OK(proxWorld_StopThreads(world));
     return s;
   }
-  proxWorldId world{};
-  proxMeshId mesh{};
-  proxBodyId tool{};
 };
 
 TEST_F(Timing, SettingsAreValidatedByName) {
