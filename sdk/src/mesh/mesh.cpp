@@ -161,6 +161,11 @@ void prefix_sum(std::vector<std::uint32_t>& offsets) {
 
 }  // namespace
 
+std::shared_ptr<const Mesh::Topology> Mesh::empty_topology() {
+  static const std::shared_ptr<const Topology> empty = std::make_shared<Topology>();
+  return empty;
+}
+
 Mesh Mesh::build(const MeshInput& in, Status& status) {
   status = validate(in);
   if (!status) return {};
@@ -179,6 +184,9 @@ Mesh Mesh::build(const MeshInput& in, Status& status) {
   }
 
   Mesh mesh;
+  auto topology = std::make_shared<Topology>();
+  Topology& topo = *topology;
+  mesh.topology_ = topology;
   MeshStats& stats = mesh.stats_;
   stats.input_vertices = in.vertex_count;
   stats.input_triangles = in.triangle_count;
@@ -189,10 +197,10 @@ Mesh Mesh::build(const MeshInput& in, Status& status) {
       ++stats.dropped_triangles;
       continue;
     }
-    mesh.triangles_.push_back(w);
-    mesh.input_triangle_.push_back(t);
+    topo.triangles.push_back(w);
+    topo.input_triangle.push_back(t);
   }
-  if (mesh.triangles_.empty()) {
+  if (topo.triangles.empty()) {
     status = invalid("mesh has no non-degenerate triangles: all " + std::to_string(in.triangle_count) +
                      " repeat a vertex after welding");
     return {};
@@ -201,18 +209,18 @@ Mesh Mesh::build(const MeshInput& in, Status& status) {
   // Keep only vertices of kept triangles, in welded order.
   const std::vector<Vec3>& welded = welder.positions();
   std::vector<std::uint32_t> final_of(welded.size(), kNone);
-  for (const auto& tri : mesh.triangles_)
+  for (const auto& tri : topo.triangles)
     for (std::uint32_t w : tri) final_of[w] = 0;
   for (std::uint32_t w = 0; w < welded.size(); ++w) {
     if (final_of[w] == kNone) continue;
     final_of[w] = static_cast<std::uint32_t>(mesh.vertices_.size());
     mesh.vertices_.push_back(welded[w]);
   }
-  for (auto& tri : mesh.triangles_)
+  for (auto& tri : topo.triangles)
     for (std::uint32_t& w : tri) w = final_of[w];
-  mesh.input_vertex_.resize(in.vertex_count);
+  topo.input_vertex.resize(in.vertex_count);
   for (std::uint32_t v = 0; v < in.vertex_count; ++v)
-    mesh.input_vertex_[v] = welded_of[v] == kNone ? kNoVertex : final_of[welded_of[v]];
+    topo.input_vertex[v] = welded_of[v] == kNone ? kNoVertex : final_of[welded_of[v]];
 
   const std::uint32_t vertex_count = mesh.vertex_count();
   const std::uint32_t triangle_count = mesh.triangle_count();
@@ -223,15 +231,15 @@ Mesh Mesh::build(const MeshInput& in, Status& status) {
 
   // Vertex -> triangles, by counting sort: ascending because triangles are
   // visited in order.
-  mesh.vertex_tri_offsets_.assign(std::size_t{vertex_count} + 1, 0);
-  for (const auto& tri : mesh.triangles_)
-    for (std::uint32_t v : tri) ++mesh.vertex_tri_offsets_[v + 1];
-  prefix_sum(mesh.vertex_tri_offsets_);
-  mesh.vertex_tri_.resize(mesh.vertex_tri_offsets_.back());
+  topo.vertex_tri_offsets.assign(std::size_t{vertex_count} + 1, 0);
+  for (const auto& tri : topo.triangles)
+    for (std::uint32_t v : tri) ++topo.vertex_tri_offsets[v + 1];
+  prefix_sum(topo.vertex_tri_offsets);
+  topo.vertex_tri.resize(topo.vertex_tri_offsets.back());
   {
-    std::vector<std::uint32_t> cursor(mesh.vertex_tri_offsets_.begin(), mesh.vertex_tri_offsets_.end() - 1);
+    std::vector<std::uint32_t> cursor(topo.vertex_tri_offsets.begin(), topo.vertex_tri_offsets.end() - 1);
     for (std::uint32_t t = 0; t < triangle_count; ++t)
-      for (std::uint32_t v : mesh.triangles_[t]) mesh.vertex_tri_[cursor[v]++] = t;
+      for (std::uint32_t v : topo.triangles[t]) topo.vertex_tri[cursor[v]++] = t;
   }
 
   // Edges. Half-edge h = 3 t + k runs from vertex k to vertex k + 1 of t.
@@ -241,7 +249,7 @@ Mesh Mesh::build(const MeshInput& in, Status& status) {
   // (lower, upper) vertex order.
   const std::uint32_t half_edges = 3 * triangle_count;
   const auto end_vertex = [&](std::uint32_t h, std::uint32_t step) {
-    return mesh.triangles_[h / 3][(h % 3 + step) % 3];
+    return topo.triangles[h / 3][(h % 3 + step) % 3];
   };
   const auto lower = [&](std::uint32_t h) { return std::min(end_vertex(h, 0), end_vertex(h, 1)); };
   const auto upper = [&](std::uint32_t h) { return std::max(end_vertex(h, 0), end_vertex(h, 1)); };
@@ -253,10 +261,10 @@ Mesh Mesh::build(const MeshInput& in, Status& status) {
     std::vector<std::uint32_t> cursor(bucket_offsets.begin(), bucket_offsets.end() - 1);
     for (std::uint32_t h = 0; h < half_edges; ++h) bucket[cursor[lower(h)]++] = h;
   }
-  mesh.triangle_edge_.assign(half_edges, kNone);
-  mesh.edge_tri_.reserve(half_edges);
-  mesh.edge_tri_offsets_.reserve(half_edges / 2 + 2);
-  mesh.edge_tri_offsets_.push_back(0);
+  topo.triangle_edge.assign(half_edges, kNone);
+  topo.edge_tri.reserve(half_edges);
+  topo.edge_tri_offsets.reserve(half_edges / 2 + 2);
+  topo.edge_tri_offsets.push_back(0);
   for (std::uint32_t v = 0; v < vertex_count; ++v) {
     const auto first = bucket.begin() + bucket_offsets[v], last = bucket.begin() + bucket_offsets[v + 1];
     std::sort(first, last, [&](std::uint32_t g, std::uint32_t h) {
@@ -265,17 +273,17 @@ Mesh Mesh::build(const MeshInput& in, Status& status) {
     });
     for (auto run = first; run != last;) {
       const std::uint32_t u = upper(*run);
-      const auto id = static_cast<std::uint32_t>(mesh.edge_tri_offsets_.size() - 1);
+      const auto id = static_cast<std::uint32_t>(topo.edge_tri_offsets.size() - 1);
       auto it = run;
       // Half-edges ascend within the run, so do their (distinct) triangles.
       for (; it != last && upper(*it) == u; ++it) {
-        mesh.triangle_edge_[*it] = id;
-        mesh.edge_tri_.push_back(*it / 3);
+        topo.triangle_edge[*it] = id;
+        topo.edge_tri.push_back(*it / 3);
       }
       const auto sharing = it - run;
       if (sharing == 1) ++stats.boundary_edges;
       if (sharing >= 3) ++stats.nonmanifold_edges;
-      mesh.edge_tri_offsets_.push_back(static_cast<std::uint32_t>(mesh.edge_tri_.size()));
+      topo.edge_tri_offsets.push_back(static_cast<std::uint32_t>(topo.edge_tri.size()));
       run = it;
     }
   }
@@ -298,10 +306,21 @@ void Mesh::compute_geometry() {
   std::vector<double> weight_sum(vertex_count, 0.0);
   stats_.zero_area_triangles = 0;
   longest_edge_ = 0.0;
+  double longest_edge2 = 0.0;  // its square
   for (std::uint32_t t = 0; t < triangle_count; ++t) {
-    const auto& tri = triangles_[t];
+    const auto& tri = topology_->triangles[t];
     const Vec3 &a = vertices_[tri[0]], &b = vertices_[tri[1]], &c = vertices_[tri[2]];
-    longest_edge_ = std::max({longest_edge_, length_of(b - a), length_of(c - b), length_of(a - c)});
+    // One square root a triangle where the squares neither over- nor
+    // underflow (length_of's range), three elsewhere.
+    const Vec3 e0 = b - a, e1 = c - b, e2 = a - c;
+    const double l0 = glm::dot(e0, e0), l1 = glm::dot(e1, e1), l2 = glm::dot(e2, e2);
+    const double longest2 = std::max({l0, l1, l2});
+    if (longest2 > 1e-290 && longest2 < 1e290) {
+      if (longest2 > longest_edge2) longest_edge2 = longest2, longest_edge_ = std::sqrt(longest2);
+    } else {
+      longest_edge_ = std::max({longest_edge_, length_of(e0), length_of(e1), length_of(e2)});
+      longest_edge2 = longest_edge_ * longest_edge_;
+    }
     if (geometry::collinear3d(a, b, c)) {
       ++stats_.zero_area_triangles;
       continue;
@@ -350,19 +369,19 @@ Vec3 Mesh::edge_normal(std::uint32_t t, int k) const {
 }
 
 const std::uint32_t* Mesh::vertex_triangles_begin(std::uint32_t v) const {
-  return vertex_tri_.data() + vertex_tri_offsets_[v];
+  return topology_->vertex_tri.data() + topology_->vertex_tri_offsets[v];
 }
 
 const std::uint32_t* Mesh::vertex_triangles_end(std::uint32_t v) const {
-  return vertex_tri_.data() + vertex_tri_offsets_[std::size_t{v} + 1];
+  return topology_->vertex_tri.data() + topology_->vertex_tri_offsets[std::size_t{v} + 1];
 }
 
 const std::uint32_t* Mesh::edge_triangles_begin(std::uint32_t t, int k) const {
-  return edge_tri_.data() + edge_tri_offsets_[triangle_edge_[std::size_t{3} * t + k]];
+  return topology_->edge_tri.data() + topology_->edge_tri_offsets[topology_->triangle_edge[std::size_t{3} * t + k]];
 }
 
 const std::uint32_t* Mesh::edge_triangles_end(std::uint32_t t, int k) const {
-  return edge_tri_.data() + edge_tri_offsets_[std::size_t{triangle_edge_[std::size_t{3} * t + k]} + 1];
+  return topology_->edge_tri.data() + topology_->edge_tri_offsets[std::size_t{topology_->triangle_edge[std::size_t{3} * t + k]} + 1];
 }
 
 }  // namespace prox

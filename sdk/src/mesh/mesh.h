@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace prox {
@@ -57,24 +58,24 @@ class Mesh {
   Status set_vertices(const double* positions, std::uint32_t count);
 
   std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(vertices_.size()); }
-  std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(triangles_.size()); }
-  bool empty() const { return triangles_.empty(); }
+  std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(topology_->triangles.size()); }
+  bool empty() const { return topology_->triangles.empty(); }
 
   const Vec3& vertex(std::uint32_t v) const { return vertices_[v]; }
-  const std::array<std::uint32_t, 3>& indices(std::uint32_t t) const { return triangles_[t]; }
+  const std::array<std::uint32_t, 3>& indices(std::uint32_t t) const { return topology_->triangles[t]; }
   Triangle triangle(std::uint32_t t) const {
-    const auto& i = triangles_[t];
+    const auto& i = topology_->triangles[t];
     return {{vertices_[i[0]], vertices_[i[1]], vertices_[i[2]]}};
   }
   // The input triangle this triangle came from (dropped ones leave gaps).
-  std::uint32_t input_triangle(std::uint32_t t) const { return input_triangle_[t]; }
+  std::uint32_t input_triangle(std::uint32_t t) const { return topology_->input_triangle[t]; }
   // The vertex input vertex `input` was welded into, or kNoVertex when no
   // kept triangle uses it. Several input vertices share one when they had
   // the same position (a glTF UV seam); a deformation that moves them apart
   // later keeps the mesh's topology, so one of them must speak for the
   // vertex: the rig (mesh/rig.h) takes the first in input order.
-  std::uint32_t welded_vertex(std::uint32_t input) const { return input_vertex_[input]; }
-  std::uint32_t input_vertex_count() const { return static_cast<std::uint32_t>(input_vertex_.size()); }
+  std::uint32_t welded_vertex(std::uint32_t input) const { return topology_->input_vertex[input]; }
+  std::uint32_t input_vertex_count() const { return static_cast<std::uint32_t>(topology_->input_vertex.size()); }
 
   // Unit face normal; zero for a zero-area triangle.
   const Vec3& face_normal(std::uint32_t t) const { return face_normals_[t]; }
@@ -96,10 +97,10 @@ class Mesh {
   // Mesh-wide id of edge k of triangle t (the same for every triangle
   // sharing the edge), in [0, edge_count()).
   std::uint32_t edge_id(std::uint32_t t, int k) const {
-    return triangle_edge_[3 * t + static_cast<std::uint32_t>(k)];
+    return topology_->triangle_edge[3 * t + static_cast<std::uint32_t>(k)];
   }
   std::uint32_t edge_count() const {
-    return edge_tri_offsets_.empty() ? 0u : static_cast<std::uint32_t>(edge_tri_offsets_.size() - 1);
+    return topology_->edge_tri_offsets.empty() ? 0u : static_cast<std::uint32_t>(topology_->edge_tri_offsets.size() - 1);
   }
 
   const Aabb& bounds() const { return bounds_; }
@@ -108,21 +109,30 @@ class Mesh {
   double longest_edge() const { return longest_edge_; }
 
  private:
+  // What never changes after build: the triangles, the welding maps and the
+  // adjacency. Shared by every copy, so that a deformed copy of the mesh
+  // (set_vertices on a copy, as a scene's new version is made) copies only
+  // the vertices and normals.
+  struct Topology {
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    std::vector<std::uint32_t> input_triangle;
+    std::vector<std::uint32_t> input_vertex;  // input vertex -> vertex, or kNoVertex
+    // CSR adjacency: vertex -> triangles.
+    std::vector<std::uint32_t> vertex_tri_offsets, vertex_tri;
+    // Per triangle edge (3 t + k) -> an edge id; edge id -> triangles (CSR).
+    std::vector<std::uint32_t> triangle_edge;
+    std::vector<std::uint32_t> edge_tri_offsets, edge_tri;
+  };
+  static std::shared_ptr<const Topology> empty_topology();
+
   // Bounds, face and vertex normals, zero-area count and longest edge from
   // the vertices and triangles.
   void compute_geometry();
 
+  std::shared_ptr<const Topology> topology_ = empty_topology();
   std::vector<Vec3> vertices_;
-  std::vector<std::array<std::uint32_t, 3>> triangles_;
-  std::vector<std::uint32_t> input_triangle_;
-  std::vector<std::uint32_t> input_vertex_;  // input vertex -> vertex, or kNoVertex
   std::vector<Vec3> face_normals_;
   std::vector<Vec3> vertex_normals_;
-  // CSR adjacency: vertex -> triangles.
-  std::vector<std::uint32_t> vertex_tri_offsets_, vertex_tri_;
-  // Per triangle edge (3 t + k) -> an edge id; edge id -> triangles (CSR).
-  std::vector<std::uint32_t> triangle_edge_;
-  std::vector<std::uint32_t> edge_tri_offsets_, edge_tri_;
   Aabb bounds_;
   MeshStats stats_;
   double longest_edge_ = 0.0;
