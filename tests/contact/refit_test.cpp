@@ -70,6 +70,9 @@ void triangles_below(const Snch& snch, std::uint32_t i, std::vector<std::uint32_
 // triangles below it in its sphere and box; a leaf's cone holds the normal
 // of every triangle sharing a vertex with it, an inner node's its
 // children's cones.
+// A cone's half-angle from the cosine and sine the node keeps.
+double half_angle(const CosCone& c) { return std::atan2(c.sin, c.cos); }
+
 void expect_bounds_hold(const Mesh& mesh, const Snch& snch) {
   const double eps = 1e-12 * mesh.longest_edge();
   int failures = 0;
@@ -90,7 +93,7 @@ void expect_bounds_hold(const Mesh& mesh, const Snch& snch) {
       for (std::uint32_t v : mesh.indices(n.first))
         for (const std::uint32_t* t = mesh.vertex_triangles_begin(v); t != mesh.vertex_triangles_end(v); ++t) {
           const Vec3& normal = mesh.face_normal(*t);
-          if (glm::dot(normal, normal) > 0.0 && angle_between(n.cone.axis, normal) > n.cone.half_angle)
+          if (glm::dot(normal, normal) > 0.0 && angle_between(n.cone.axis, normal) > half_angle(n.cone))
             ++failures, ADD_FAILURE() << "leaf " << i << " cone misses triangle " << *t << "'s normal";
         }
       continue;
@@ -107,7 +110,7 @@ void expect_bounds_hold(const Mesh& mesh, const Snch& snch) {
       const SnchNode& child = snch.node(c);
       if (!n.cone.unbounded() &&
           (child.cone.unbounded() ||
-           angle_between(n.cone.axis, child.cone.axis) + child.cone.half_angle > n.cone.half_angle + 1e-12))
+           angle_between(n.cone.axis, child.cone.axis) + half_angle(child.cone) > half_angle(n.cone) + 1e-12))
         ++failures, ADD_FAILURE() << "node " << i << " cone misses child " << c;
     }
   }

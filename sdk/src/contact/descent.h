@@ -123,7 +123,7 @@ inline double cos_sum(double cx, double sx, double cy, double sy) {
 // cos(angle(a, -b)) < cos(phi_a + phi_b).
 inline bool g2_rejects(const NodePair& p) {
   if (p.a.cone.unbounded() || p.b.cone.unbounded()) return false;
-  const double limit = cos_sum(p.a.cone_cos, p.a.cone_sin, p.b.cone_cos, p.b.cone_sin);
+  const double limit = cos_sum(p.a.cone.cos, p.a.cone.sin, p.b.cone.cos, p.b.cone.sin);
   if (limit <= -1.0) return false;
   const double c = -glm::dot(p.a.cone.axis, p.axis_b);
   // Two-sided cones: the axes may point either way; the most favourable
@@ -144,7 +144,7 @@ inline bool g3_rejects(const NodePair& p) {
   const Vec3 dir = between / dist;
   auto misses = [&](const SnchNode& n, const Vec3& d, const Vec3& axis, bool two_sided) {
     if (n.cone.unbounded()) return false;
-    const double limit = cos_sum(cos_sigma, sin_sigma, n.cone_cos, n.cone_sin);
+    const double limit = cos_sum(cos_sigma, sin_sigma, n.cone.cos, n.cone.sin);
     if (limit <= -1.0) return false;
     const double c = glm::dot(d, axis);
     return (two_sided ? std::abs(c) : c) < limit;

@@ -105,13 +105,6 @@ void refit_inner(std::vector<SnchNode>& nodes, std::vector<SnchBox>& boxes) {
   }
 }
 
-// A refit takes one angle per leaf cone and per vertex spread, of the
-// normal whose dot product with the axis is least, where a build takes the
-// largest of all the angles. Dot products that round the other way belong
-// to angles within about 2e-16 / sin(angle) of each other, at most 2e-8 rad
-// near a zero angle: the refit widens its angles by this much to cover that.
-constexpr double kRefitAngleMargin = 3e-8;
-
 }  // namespace
 
 Cone Snch::leaf_cone(const Mesh& mesh, std::uint32_t t, const std::vector<std::uint8_t>& open) {
@@ -161,6 +154,9 @@ Snch::Snch(const Mesh& mesh) {
   // Each node's range in `order`, for fitting inner spheres to their vertices.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> range(n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0);
   std::vector<Task> stack;
+  // The build merges cones as angles (exactly the smallest cone holding
+  // both); the nodes keep their cosines and sines.
+  std::vector<Cone> cones(nodes_.capacity());
   // Each vertex's openness, once: every triangle around it asks.
   open_.resize(mesh.vertex_count());
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) open_[v] = vertex_is_open(mesh, v);
@@ -182,14 +178,14 @@ Snch::Snch(const Mesh& mesh) {
       const Sphere s = triangle_sphere(mesh.triangle(t));
       leaf.center = s.center;
       leaf.radius = s.radius;
-      leaf.cone = leaf_cone(mesh, t, open);
+      cones[task.node] = leaf_cone(mesh, t, open);
       leaf.first = t;
       leaf.second = SnchNode::kLeaf;
       const Triangle tri = mesh.triangle(t);
       boxes_[task.node] = box_between(glm::min(glm::min(tri.v[0], tri.v[1]), tri.v[2]),
                                       glm::max(glm::max(tri.v[0], tri.v[1]), tri.v[2]));
       ++stats_.leaves;
-      if (leaf.cone.unbounded()) ++stats_.unbounded_leaves;
+      if (cones[task.node].unbounded()) ++stats_.unbounded_leaves;
       continue;
     }
     Vec3 lo = centroid[order[task.begin]], hi = lo;
@@ -235,14 +231,11 @@ Snch::Snch(const Mesh& mesh) {
     if (std::sqrt(r2) < s.radius) s = {centre, std::sqrt(r2)};
     node.center = s.center;
     node.radius = s.radius;
-    node.cone = merge(a.cone, b.cone);
+    cones[i] = merge(cones[node.first], cones[node.second]);
   }
-  for (SnchNode& node : nodes_) {
-    node.cone_cos = std::cos(node.cone.half_angle);
-    node.cone_sin = std::sin(node.cone.half_angle);
-  }
+  for (std::size_t i = 0; i < nodes_.size(); ++i) nodes_[i].cone = CosCone::of(cones[i]);
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) two_sided_ = two_sided_ || open_[v];
-  compute_vertex_spread(mesh, false);
+  compute_vertex_spread(mesh);
   stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
   stats_.memory_bytes = nodes_.capacity() * sizeof(SnchNode) + boxes_.capacity() * sizeof(SnchBox) +
                         vertex_spread_.capacity() * sizeof(double) + open_.capacity();
@@ -258,28 +251,15 @@ Snch::Snch(const Mesh& mesh) {
   stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void Snch::compute_vertex_spread(const Mesh& mesh, bool one_angle) {
+void Snch::compute_vertex_spread(const Mesh& mesh) {
   vertex_spread_.assign(mesh.vertex_count(), 0.5 * kPi);
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
     const Vec3& normal = mesh.vertex_normal(v);
     if (open_[v] || !(glm::dot(normal, normal) > 0.0)) continue;
     double spread = 0.0;
-    if (one_angle) {
-      // As the leaf cones of a refit: the face normal least aligned has the
-      // widest angle, up to the dot products' rounding, which the margin covers.
-      double least = 2.0;
-      Vec3 widest = normal;
-      for (const std::uint32_t* t = mesh.vertex_triangles_begin(v); t != mesh.vertex_triangles_end(v); ++t) {
-        const Vec3& f = mesh.face_normal(*t);
-        const double d = glm::dot(normal, f);
-        if (d < least && glm::dot(f, f) > 0.0) least = d, widest = f;
-      }
-      spread = angle_between(normal, widest) + kRefitAngleMargin;
-    } else {
-      for (const std::uint32_t* t = mesh.vertex_triangles_begin(v); t != mesh.vertex_triangles_end(v); ++t) {
-        const Vec3& f = mesh.face_normal(*t);
-        if (glm::dot(f, f) > 0.0) spread = std::max(spread, angle_between(normal, f));
-      }
+    for (const std::uint32_t* t = mesh.vertex_triangles_begin(v); t != mesh.vertex_triangles_end(v); ++t) {
+      const Vec3& f = mesh.face_normal(*t);
+      if (glm::dot(f, f) > 0.0) spread = std::max(spread, angle_between(normal, f));
     }
     vertex_spread_[v] = std::min(spread, 0.5 * kPi);
   }
@@ -298,52 +278,56 @@ double Snch::radius_ratio() const {
 
 void Snch::refit(const Mesh& mesh) {
   const auto start = std::chrono::steady_clock::now();
-  // Each vertex's sum of the face normals around it: a leaf's cone axis is
-  // the sum over its three vertices, as leaf_cone() takes it.
-  std::vector<Vec3> ring_sum(mesh.vertex_count(), Vec3(0.0));
-  for (std::uint32_t t = 0; t < mesh.triangle_count(); ++t)
-    for (std::uint32_t v : mesh.indices(t)) ring_sum[v] += mesh.face_normal(t);
+  // Each vertex's cone of the face normals around it, about its vertex
+  // normal: its half-angle is the vertex's spread, and a leaf's cone is the
+  // merge of its three vertices' (leaf_cone() bounds the same normals, about
+  // their sum). Kept between refits; a refit runs on one thread at a time.
+  static thread_local std::vector<CosCone> vertex_cone;
+  vertex_cone.resize(mesh.vertex_count());
+  vertex_spread_.resize(mesh.vertex_count());
+  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
+    vertex_cone[v] = refit_vertex_cone(mesh, v);
+    const CosCone& c = vertex_cone[v];
+    vertex_spread_[v] = c.cos > 0.0 ? std::atan2(c.sin, c.cos) : 0.5 * kPi;
+  }
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
     SnchNode& node = nodes_[i];
-    if (node.is_leaf()) {
-      const std::uint32_t t = node.first;
-      const Triangle tri = mesh.triangle(t);
-      const Sphere s = triangle_sphere(tri);
-      node.center = s.center;
-      node.radius = s.radius;
-      boxes_[i] = box_between(glm::min(glm::min(tri.v[0], tri.v[1]), tri.v[2]),
-                              glm::max(glm::max(tri.v[0], tri.v[1]), tri.v[2]));
-      // leaf_cone(), with one angle per leaf: the normal least aligned with
-      // the axis has the widest angle, up to the dot products' rounding,
-      // which the margin covers.
-      const auto& idx = mesh.indices(t);
-      node.cone = Cone::everything();
-      if (open_[idx[0]] || open_[idx[1]] || open_[idx[2]]) continue;
-      const Vec3 sum = ring_sum[idx[0]] + ring_sum[idx[1]] + ring_sum[idx[2]];
-      const double len = glm::length(sum);
-      if (!(len > 1e-12)) continue;
-      const Vec3 axis = sum / len;
-      double least = 2.0;
-      Vec3 widest = axis;
-      for (std::uint32_t v : idx)
-        for (const std::uint32_t* n = mesh.vertex_triangles_begin(v); n != mesh.vertex_triangles_end(v); ++n) {
-          const Vec3& normal = mesh.face_normal(*n);
-          const double d = glm::dot(axis, normal);
-          if (d < least && glm::dot(normal, normal) > 0.0) least = d, widest = normal;
-        }
-      const double half = angle_between(axis, widest) + kRefitAngleMargin;
-      if (half < 0.5 * kPi) node.cone = {axis, half};
-    }
+    if (!node.is_leaf()) continue;
+    const Triangle tri = mesh.triangle(node.first);
+    const Sphere s = triangle_sphere(tri);
+    node.center = s.center;
+    node.radius = s.radius;
+    boxes_[i] = box_between(glm::min(glm::min(tri.v[0], tri.v[1]), tri.v[2]),
+                            glm::max(glm::max(tri.v[0], tri.v[1]), tri.v[2]));
+    // Past a right angle, everything, as leaf_cone() has it.
+    const auto& idx = mesh.indices(node.first);
+    node.cone = merge(merge(vertex_cone[idx[0]], vertex_cone[idx[1]]), vertex_cone[idx[2]]);
+    if (!(node.cone.cos > 0.0)) node.cone = CosCone::everything();
   }
   refit_inner(nodes_, boxes_);
-  for (SnchNode& node : nodes_) {
-    node.cone_cos = std::cos(node.cone.half_angle);
-    node.cone_sin = std::sin(node.cone.half_angle);
-  }
-  compute_vertex_spread(mesh, true);
   stats_.refits += 1;
   stats_.degradation = radius_ratio() / built_ratio_;
   stats_.refit_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+CosCone Snch::refit_vertex_cone(const Mesh& mesh, std::uint32_t v) const {
+  // Without trigonometry: the widest angle's cosine is the least dot product
+  // with the axis, its sine the largest cross product, each a bound on its
+  // own (below a right angle the sine grows with the angle), so no normal is
+  // left out by the other's rounding.
+  const Vec3& axis = mesh.vertex_normal(v);
+  if (open_[v] || !(glm::dot(axis, axis) > 0.0)) return CosCone::everything();
+  double least = 1.0, widest2 = 0.0;
+  for (const std::uint32_t* t = mesh.vertex_triangles_begin(v); t != mesh.vertex_triangles_end(v); ++t) {
+    const Vec3& normal = mesh.face_normal(*t);
+    if (!(glm::dot(normal, normal) > 0.0)) continue;
+    least = std::min(least, glm::dot(axis, normal));
+    const Vec3 c = glm::cross(axis, normal);
+    widest2 = std::max(widest2, glm::dot(c, c));
+  }
+  if (!(least > 0.0)) return CosCone::everything();
+  // Widened by a few roundings of the products above.
+  return {axis, least - 4e-16, std::min(1.0, std::sqrt(widest2) * (1.0 + 4e-16) + 4e-16)};
 }
 
 }  // namespace prox

@@ -14,9 +14,9 @@ struct SnchNode {
   Vec3 center{0.0};  // bounding sphere of the node's triangles, mesh units
   double radius = 0.0;
   // Directions along which a local minimum distance pair can leave the
-  // surface of any triangle below this node (see docs/snch.md).
-  Cone cone;
-  double cone_cos = -1.0, cone_sin = 0.0;  // of cone.half_angle, for trigonometry-free tests
+  // surface of any triangle below this node (see docs/snch.md), as the
+  // cosine and sine of its half-angle, which the searches test with.
+  CosCone cone;
   // Inner node: children `first` and `second`. Leaf: `first` is the
   // triangle, `second` is kLeaf.
   std::uint32_t first = 0, second = 0;
@@ -100,13 +100,16 @@ class Snch {
   // By vertex: the surface around it is open or folded (topology alone, so
   // a refit keeps it).
   std::vector<std::uint8_t> open_;
+  // The cone of the face normals around vertex v about its vertex normal,
+  // as a refit computes it; everything where the surface is open there.
+  CosCone refit_vertex_cone(const Mesh& mesh, std::uint32_t v) const;
   // radius_ratio() of the built tree, its inner nodes as a refit fits them.
   double built_ratio_ = 1.0;
   // The inner nodes' summed radii over the root's, of the tree as it is.
   double radius_ratio() const;
-  // Every vertex's spread (vertex_spread) from the mesh's normals; with
-  // `one_angle`, a refit's: one angle per vertex, widened by a margin.
-  void compute_vertex_spread(const Mesh& mesh, bool one_angle);
+  // Every vertex's spread (vertex_spread) from the mesh's normals, as a
+  // build takes it (a refit takes it from its vertex cones).
+  void compute_vertex_spread(const Mesh& mesh);
   bool two_sided_ = false;
   SnchStats stats_;
 };
