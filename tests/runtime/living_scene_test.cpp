@@ -4,6 +4,7 @@
 // allocation), the contacts must follow the new shapes, and a destroyed
 // body's contacts must leave the force by a fade, not a step.
 #include "runtime/threads_fixture.h"
+#include "support/marked_threads.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -66,6 +67,31 @@ class LivingScene : public ThreadsTest {
 // The wall swells 0.3 mm towards the held tool while the global search is
 // stalled: local tracking alone carries the contacts onto the new shape, to
 // the distance the deterministic method measures there.
+TEST_F(LivingScene, ADeformingMeshWritesOverItsRetiredShapes) {
+  // Frame after frame a new shape is made in the storage of one retired
+  // before it, once no thread holds that: nothing of the size of the mesh's
+  // vertices or its hierarchy is allocated (here no thread runs, so the
+  // shape retired by a frame is back for the next).
+  std::vector<std::vector<double>> frames;
+  for (int f = 0; f < 8; ++f) frames.push_back(wall_moved(Vec3(0.0, 0.0, 1e-4 * f)));
+  Status status;
+  for (int f = 0; f < 2; ++f)
+    ASSERT_TRUE(world_->set_vertices(wall_mesh_, frames[f].data(), bunny_->mesh.vertex_count(), status))
+        << status.message();
+  prox::testing::reset_marked_counts();
+  {
+    const prox::testing::MarkedScope marked;
+    for (int f = 2; f < 8; ++f)
+      ASSERT_TRUE(world_->set_vertices(wall_mesh_, frames[f].data(), bunny_->mesh.vertex_count(), status));
+  }
+  const std::size_t vertices_bytes = bunny_->mesh.vertex_count() * sizeof(Vec3);
+  EXPECT_LT(prox::testing::marked_largest_allocation(), vertices_bytes / 8);
+  prox::testing::reset_marked_counts();  // the game thread's, not the haptic thread's
+  // And the shape is the last frame's, its hierarchy refitted, not rebuilt.
+  EXPECT_EQ(world_->mesh(wall_mesh_).vertex(7), bunny_->mesh.vertex(7) + Vec3(0.0, 0.0, 7e-4));
+  EXPECT_EQ(world_->snch(wall_mesh_).stats().refits, 8u);
+}
+
 TEST_F(LivingScene, ADeformationIsTrackedWithoutAGlobalSearch) {
   FaultyDevice* device = nullptr;
   start_and_settle(device);

@@ -302,8 +302,12 @@ void Mesh::compute_geometry() {
   // Face normals, and vertex normals weighted by the angle at the vertex: a
   // face split into more triangles does not weigh more.
   face_normals_.assign(triangle_count, Vec3(0.0));
-  std::vector<Vec3> normal_sum(vertex_count, Vec3(0.0));
-  std::vector<double> weight_sum(vertex_count, 0.0);
+  // Scratch kept by the thread between calls: a deforming mesh's every
+  // frame would otherwise allocate it anew.
+  static thread_local std::vector<Vec3> normal_sum;
+  static thread_local std::vector<double> weight_sum;
+  normal_sum.assign(vertex_count, Vec3(0.0));
+  weight_sum.assign(vertex_count, 0.0);
   stats_.zero_area_triangles = 0;
   longest_edge_ = 0.0;
   double longest_edge2 = 0.0;  // its square

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace prox::runtime {
@@ -24,6 +25,16 @@ struct MeshData {
   Mesh mesh;
   std::shared_ptr<const Snch> snch;
   std::uint64_t version = 0;  // unique in its world: a new shape, a new version
+};
+
+// Where a deforming mesh's retired shape goes once no thread holds it: its
+// storage (vertices, normals, hierarchy) is written over for the next
+// shape, which then costs no allocation and no copy of the hierarchy. The
+// thread that lets a shape go last puts it here, under the mutex (never the
+// haptic thread: it holds no shape).
+struct MeshRecycler {
+  std::mutex mutex;
+  std::unique_ptr<MeshData> spare;
 };
 
 struct SceneBody {

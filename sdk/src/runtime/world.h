@@ -272,6 +272,7 @@ class World {
     std::uint32_t generation = 0;
     bool alive = false;
     std::shared_ptr<const MeshData> data;  // the mesh's current shape
+    std::shared_ptr<MeshRecycler> recycler;  // its retired shapes' storage
     int users = 0;
   };
   struct BodySlot {

@@ -19,6 +19,21 @@ std::uint32_t free_slot(std::vector<Slot>& slots) {
   return static_cast<std::uint32_t>(slots.size() - 1);
 }
 
+// `data` as a published shape that, once no one holds it, goes back to
+// `recycler` for the next deformation (or is freed when it has one already,
+// or the mesh is gone).
+std::shared_ptr<const MeshData> recyclable(std::unique_ptr<MeshData> data,
+                                           const std::shared_ptr<MeshRecycler>& recycler) {
+  std::weak_ptr<MeshRecycler> to = recycler;
+  return std::shared_ptr<const MeshData>(data.release(), [to](const MeshData* retired) {
+    std::unique_ptr<MeshData> owned(const_cast<MeshData*>(retired));
+    if (const auto r = to.lock()) {
+      const std::lock_guard<std::mutex> lock(r->mutex);
+      if (!r->spare) r->spare = std::move(owned);
+    }
+  });
+}
+
 }  // namespace
 
 double World::radius_about(const Aabb& box, const Vec3& point) {
@@ -33,18 +48,21 @@ double World::radius_about(const Aabb& box, const Vec3& point) {
 
 Handle World::create_mesh(const MeshInput& input, Status& status) {
   // Built here, on the calling thread, before any lock is taken.
-  auto data = std::make_shared<MeshData>();
+  auto data = std::make_unique<MeshData>();
   data->mesh = Mesh::build(input, status);
   if (!status) return {};
-  data->snch = std::make_shared<const Snch>(data->mesh);
+  data->snch = std::make_shared<Snch>(data->mesh);
   data->version = ++mesh_versions_;
+  auto recycler = std::make_shared<MeshRecycler>();
+  std::shared_ptr<const MeshData> shape = recyclable(std::move(data), recycler);
   std::unique_lock<std::mutex> lock(scene_mutex_, std::defer_lock);
   if (running()) lock.lock();
   const std::uint32_t i = free_slot(meshes_);
   MeshSlot& slot = meshes_[i];
   slot.generation += 1;
   slot.alive = true;
-  slot.data = std::move(data);
+  slot.data = std::move(shape);
+  slot.recycler = std::move(recycler);
   slot.users = 0;
   return {i, slot.generation};
 }
@@ -60,11 +78,13 @@ bool World::destroy_mesh(Handle h, Status& status) {
                     "mesh is used by " + std::to_string(slot.users) + " bodies; destroy them first");
     return false;
   }
-  std::shared_ptr<const MeshData> gone;  // freed after the lock is let go
+  std::shared_ptr<const MeshData> gone;  // freed after the lock is let go,
+  std::shared_ptr<MeshRecycler> recycler;  // with a spare shape
   std::unique_lock<std::mutex> lock(scene_mutex_, std::defer_lock);
   if (running()) lock.lock();
   slot.alive = false;
   gone = std::move(slot.data);
+  recycler = std::move(slot.recycler);
   rigs_.erase(h.index);
   return true;
 }
@@ -83,23 +103,36 @@ bool World::set_vertices(Handle h, const std::vector<Vec3>& positions, Status& s
 bool World::set_vertices(Handle h, const double* positions, std::uint32_t count, Status& status) {
   MeshSlot& slot = meshes_[h.index];
   // The new shape is made beside the published one, which the tracking
-  // threads may be reading: a copy of the mesh moved, and a copy of its
-  // hierarchy refitted (or built anew once refitting has loosened it too far).
-  auto data = std::make_shared<MeshData>();
-  data->mesh = slot.data->mesh;
+  // threads may be reading: the mesh moved and its hierarchy refitted (or
+  // built anew once refitting has loosened it too far), in a retired
+  // shape's storage where one is back from the threads, else in new.
+  std::unique_ptr<MeshData> data;
+  {
+    const std::lock_guard<std::mutex> lock(slot.recycler->mutex);
+    data = std::move(slot.recycler->spare);
+  }
+  if (!data) data = std::make_unique<MeshData>();
+  data->mesh = slot.data->mesh;  // vertices and normals; the topology is shared
   status = data->mesh.set_vertices(positions, count);
   if (!status) return false;
-  auto snch = std::make_shared<Snch>(*slot.data->snch);
-  snch->refit(data->mesh);
+  // Only a MeshData holds its hierarchy, and a spare is held by no one.
+  auto snch = std::const_pointer_cast<Snch>(std::move(data->snch));
+  if (snch) {
+    snch->refit_as(*slot.data->snch, data->mesh);
+  } else {
+    snch = std::make_shared<Snch>(*slot.data->snch);
+    snch->refit(data->mesh);
+  }
   if (snch->stats().degradation > Snch::kRebuildDegradation) snch = std::make_shared<Snch>(data->mesh);
   data->snch = std::move(snch);
   data->version = ++mesh_versions_;
+  std::shared_ptr<const MeshData> shape = recyclable(std::move(data), slot.recycler);
 
   std::shared_ptr<const MeshData> old;  // freed after the lock is let go
   std::unique_lock<std::mutex> lock(scene_mutex_, std::defer_lock);
   if (running()) lock.lock();
   old = std::move(slot.data);
-  slot.data = std::move(data);
+  slot.data = std::move(shape);
   // Every body using the mesh has a new shape: its pairs are searched again
   // (a pose version is what a pair's answer is kept by), and the broadphase
   // takes the new bounds.

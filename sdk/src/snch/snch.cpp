@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <numeric>
@@ -136,6 +137,8 @@ Cone Snch::leaf_cone(const Mesh& mesh, std::uint32_t t, const std::vector<std::u
 }
 
 Snch::Snch(const Mesh& mesh) {
+  static std::atomic<std::uint64_t> builds{0};
+  build_id_ = ++builds;
   const auto start = std::chrono::steady_clock::now();
   const std::uint32_t n = mesh.triangle_count();
   std::vector<Vec3> centroid(n);
@@ -299,15 +302,44 @@ void Snch::refit(const Mesh& mesh) {
     node.radius = s.radius;
     boxes_[i] = box_between(glm::min(glm::min(tri.v[0], tri.v[1]), tri.v[2]),
                             glm::max(glm::max(tri.v[0], tri.v[1]), tri.v[2]));
-    // Past a right angle, everything, as leaf_cone() has it.
-    const auto& idx = mesh.indices(node.first);
-    node.cone = merge(merge(vertex_cone[idx[0]], vertex_cone[idx[1]]), vertex_cone[idx[2]]);
-    if (!(node.cone.cos > 0.0)) node.cone = CosCone::everything();
+    node.cone = refit_leaf_cone(mesh, node.first, vertex_cone);
   }
   refit_inner(nodes_, boxes_);
   stats_.refits += 1;
   stats_.degradation = radius_ratio() / built_ratio_;
   stats_.refit_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void Snch::refit_as(const Snch& current, const Mesh& mesh) {
+  if (build_id_ != current.build_id_) {
+    *this = current;  // another tree: copied, into the storage at hand where it fits
+  } else {
+    // The same nodes and topology: refit() writes every bound, vertex
+    // spread and statistic but these.
+    stats_ = current.stats_;
+  }
+  refit(mesh);
+}
+
+CosCone Snch::refit_leaf_cone(const Mesh& mesh, std::uint32_t t, const std::vector<CosCone>& vertex_cone) {
+  // The cone about the face normal that holds its vertices' cones: the
+  // widest of their axes' angles to it plus their half-angles, sums taken on
+  // cosines and sines. Three square roots, where merging the three cones
+  // would take eight and their divisions; a little wider than that merge.
+  // Past a right angle, everything, as leaf_cone() has it.
+  const Vec3& axis = mesh.face_normal(t);
+  const auto& idx = mesh.indices(t);
+  const CosCone* cones[3] = {&vertex_cone[idx[0]], &vertex_cone[idx[1]], &vertex_cone[idx[2]]};
+  if (cones[0]->unbounded() || cones[1]->unbounded() || cones[2]->unbounded() || !(glm::dot(axis, axis) > 0.0))
+    return CosCone::everything();
+  double c = 1.0, s = 0.0;  // the widest so far
+  for (const CosCone* v : cones) {
+    const double ct = glm::dot(axis, v->axis), st = glm::length(glm::cross(axis, v->axis));
+    const double cw = ct * v->cos - st * v->sin, sw = st * v->cos + ct * v->sin;
+    if (!(cw > 0.0)) return CosCone::everything();
+    if (!cone_detail::at_most(cw, sw, c, s)) c = cw, s = sw;
+  }
+  return cone_detail::widened(axis, c, s);
 }
 
 CosCone Snch::refit_vertex_cone(const Mesh& mesh, std::uint32_t v) const {

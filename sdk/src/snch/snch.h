@@ -68,6 +68,12 @@ class Snch {
   // bounds stay conservative, only looser than a fresh build's
   // (stats().degradation says how much).
   void refit(const Mesh& mesh);
+  // Becomes `current` refitted to `mesh` (current's mesh moved), reusing
+  // this tree's storage: what a deforming mesh's next shape is made from
+  // when a retired shape's tree is at hand. Where this tree is an older
+  // refit of the same build, only the bounds are written (refit() writes
+  // them all); else current is copied first.
+  void refit_as(const Snch& current, const Mesh& mesh);
 
   const std::vector<SnchNode>& nodes() const { return nodes_; }
   const SnchNode& root() const { return nodes_[0]; }
@@ -103,6 +109,9 @@ class Snch {
   // The cone of the face normals around vertex v about its vertex normal,
   // as a refit computes it; everything where the surface is open there.
   CosCone refit_vertex_cone(const Mesh& mesh, std::uint32_t v) const;
+  // Triangle t's leaf cone in a refit, from its vertices' cones: it holds
+  // what leaf_cone() holds.
+  static CosCone refit_leaf_cone(const Mesh& mesh, std::uint32_t t, const std::vector<CosCone>& vertex_cone);
   // radius_ratio() of the built tree, its inner nodes as a refit fits them.
   double built_ratio_ = 1.0;
   // The inner nodes' summed radii over the root's, of the tree as it is.
@@ -112,6 +121,9 @@ class Snch {
   void compute_vertex_spread(const Mesh& mesh);
   bool two_sided_ = false;
   SnchStats stats_;
+  // Unique to each build; copies and refits keep it, so two trees with the
+  // same id have the same nodes' children and leaves' triangles.
+  std::uint64_t build_id_ = 0;
 };
 
 }  // namespace prox
