@@ -91,8 +91,19 @@ TEST(CApiBasics, CreateWorldValidatesTheDef) {
   EXPECT_FAILS(proxCreateWorld(&def, nullptr), PROX_ERROR_INVALID_ARGUMENT, "world is NULL");
   proxWorldDef zero{};
   EXPECT_FAILS(proxCreateWorld(&zero, &w), PROX_ERROR_INVALID_ARGUMENT, "proxDefaultWorldDef");
+  // Same major version, minor not newer than the library's.
   def.apiVersion = PROX_API_VERSION + 1;
   EXPECT_FAILS(proxCreateWorld(&def, &w), PROX_ERROR_VERSION_MISMATCH, "API version");
+  def.apiVersion = (PROX_VERSION_MAJOR + 1) << 16;
+  EXPECT_FAILS(proxCreateWorld(&def, &w), PROX_ERROR_VERSION_MISMATCH, "takes defs of");
+  def.apiVersion = -1;
+  EXPECT_FAILS(proxCreateWorld(&def, &w), PROX_ERROR_VERSION_MISMATCH, "API version");
+  for (int32_t minor = 0; minor <= PROX_VERSION_MINOR; ++minor) {
+    def.apiVersion = (PROX_VERSION_MAJOR << 16) | minor;
+    ASSERT_EQ(proxCreateWorld(&def, &w), PROX_SUCCESS) << "a def of version 0." << minor << ": " << proxGetLastError();
+    ASSERT_OK(proxDestroyWorld(w));
+  }
+  def = proxDefaultWorldDef();
   struct Bad {
     void (*spoil)(proxWorldDef&);
     const char* field;
@@ -148,6 +159,42 @@ TEST_F(CApi, CallsFromAnotherThreadAreRefused) {
   EXPECT_EQ(destroy, PROX_ERROR_WRONG_THREAD);
   EXPECT_NE(message.find("game thread"), std::string::npos);
   EXPECT_TRUE(proxWorld_IsValid(world));
+}
+
+TEST_F(CApi, MeshAndBodyIdsSayWhetherTheyAreValid) {
+  const proxBodyId b = body(PROX_BODY_STATIC, at(0));
+  EXPECT_TRUE(proxMesh_IsValid(mesh));
+  EXPECT_TRUE(proxBody_IsValid(b));
+  EXPECT_STREQ(proxGetLastError(), "");
+  // From another thread: false, and the last error there says why.
+  proxBool mesh_elsewhere = 1, body_elsewhere = 1;
+  std::string why;
+  std::thread([&] {
+    mesh_elsewhere = proxMesh_IsValid(mesh);
+    body_elsewhere = proxBody_IsValid(b);
+    why = proxGetLastError();
+  }).join();
+  EXPECT_FALSE(mesh_elsewhere);
+  EXPECT_FALSE(body_elsewhere);
+  EXPECT_NE(why.find("game thread"), std::string::npos) << why;
+  // Null, destroyed, and an id of another kind's slot in a new generation.
+  EXPECT_FALSE(proxMesh_IsValid(proxMeshId{}));
+  EXPECT_FALSE(proxBody_IsValid(proxBodyId{}));
+  EXPECT_NE(std::string(proxGetLastError()).find("null"), std::string::npos);
+  ASSERT_OK(proxBody_Destroy(b));
+  EXPECT_FALSE(proxBody_IsValid(b));
+  EXPECT_NE(std::string(proxGetLastError()).find("live body"), std::string::npos);
+  const proxBodyId again = body(PROX_BODY_STATIC, at(0));  // the same slot, a new generation
+  EXPECT_TRUE(proxBody_IsValid(again));
+  EXPECT_FALSE(proxBody_IsValid(b));
+  ASSERT_OK(proxBody_Destroy(again));
+  ASSERT_OK(proxMesh_Destroy(mesh));
+  EXPECT_FALSE(proxMesh_IsValid(mesh));
+  // A destroyed world's ids.
+  const proxMeshId stale_world_mesh = mesh;
+  ASSERT_OK(proxDestroyWorld(world));
+  EXPECT_FALSE(proxMesh_IsValid(stale_world_mesh));
+  EXPECT_NE(std::string(proxGetLastError()).find("live world"), std::string::npos);
 }
 
 TEST_F(CApi, CreateMeshValidatesItsData) {

@@ -147,6 +147,12 @@ class Mesh:
         """Destroys the mesh; refused while bodies use it."""
         check(lib.proxMesh_Destroy(self._idp[0]))
 
+    @property
+    def valid(self):
+        """Whether the mesh is alive in a live world (False from a thread
+        other than the world's)."""
+        return bool(lib.proxMesh_IsValid(self._idp[0]))
+
     def __eq__(self, other):
         return isinstance(other, Mesh) and other.world is self.world and _key(other._idp[0]) == _key(self._idp[0])
 
@@ -316,6 +322,12 @@ class Body:
     def destroy(self):
         check(lib.proxBody_Destroy(self._idp[0]))
         self.world._body_info.pop(_key(self._idp[0]), None)
+
+    @property
+    def valid(self):
+        """Whether the body is alive in a live world (False from a thread
+        other than the world's)."""
+        return bool(lib.proxBody_IsValid(self._idp[0]))
 
     def __eq__(self, other):
         return isinstance(other, Body) and other.world is self.world and _key(other._idp[0]) == _key(self._idp[0])

@@ -141,12 +141,15 @@ def test_destroyed_objects_raise_invalid_handle():
     mesh = w.create_mesh(*cube())
     body = w.create_body(mesh, "tool")
     device = w.create_scripted_device([((0, 0, 0), (1, 0, 0, 0))], 0.1)
+    assert body.valid and mesh.valid
     body.destroy()
+    assert not body.valid and mesh.valid
     with raises(proxima.InvalidHandle, "does not name a live body"):
         body.pose
     with raises(proxima.InvalidHandle, "proxBody_Destroy"):
         body.destroy()
     mesh.destroy()
+    assert not mesh.valid
     with raises(proxima.InvalidHandle, "proxMesh_GetInfo"):
         mesh.info
     tool = w.create_body(w.create_mesh(*cube()), "tool")

@@ -54,7 +54,8 @@ extern "C" {
 #endif /* PROX_API */
 
 /* The API version this header describes. proxDefaultWorldDef() stores it in
- * the def; proxCreateWorld() refuses a def from an incompatible header. */
+ * the def; proxCreateWorld() takes a def of the library's major version and
+ * a minor one not newer than the library's, and refuses any other. */
 #define PROX_API_VERSION ((PROX_VERSION_MAJOR << 16) | PROX_VERSION_MINOR)
 
 /* A 32-bit boolean: 0 is false, anything else true. */
@@ -205,6 +206,10 @@ PROX_API proxResult proxWorld_LoadMeshFromMemory(proxWorldId world, const void* 
 /* Destroys a mesh; fails while bodies use it. Game thread; also while the
  * threads run. */
 PROX_API proxResult proxMesh_Destroy(proxMeshId mesh);
+/* Whether an id names a live mesh of a live world. Game thread: from any
+ * other it is false, and proxGetLastError says why (as it does for a dead
+ * or null id). */
+PROX_API proxBool proxMesh_IsValid(proxMeshId mesh);
 
 typedef struct proxMeshInfo {
   uint32_t triangleCount; /* after dropping triangles that repeat a vertex */
@@ -363,6 +368,8 @@ PROX_API proxBodyDef proxDefaultBodyDef(void);
  * haptic loop last read. */
 PROX_API proxResult proxWorld_CreateBody(proxWorldId world, const proxBodyDef* def, proxBodyId* body);
 PROX_API proxResult proxBody_Destroy(proxBodyId body);
+/* Whether an id names a live body of a live world; as proxMesh_IsValid. */
+PROX_API proxBool proxBody_IsValid(proxBodyId body);
 PROX_API proxResult proxBody_SetPose(proxBodyId body, const proxPose* pose);
 PROX_API proxResult proxBody_GetPose(proxBodyId body, proxPose* pose);
 /* A tool's proxy: where it is rendered and where its contacts, distances and

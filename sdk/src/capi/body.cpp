@@ -138,6 +138,13 @@ proxResult proxBody_Destroy(proxBodyId body) {
   });
 }
 
+proxBool proxBody_IsValid(proxBodyId body) {
+  return valid("proxBody_IsValid", [&] {
+    runtime::World* w = nullptr;
+    body_of(body, w);
+  });
+}
+
 proxResult proxBody_SetPose(proxBodyId body, const proxPose* pose) {
   return guard("proxBody_SetPose", [&] {
     runtime::World* w = nullptr;

@@ -19,6 +19,7 @@
 #include <mutex>
 #include <new>
 #include <string>
+#include <utility>
 #include <thread>
 #include <vector>
 
@@ -111,6 +112,14 @@ inline runtime::Handle tool_of(proxBodyId id, runtime::World*& world) {
   if (world->type(h) != runtime::BodyType::Tool)
     fail(PROX_ERROR_INVALID_ARGUMENT, "tool is not a PROX_BODY_TOOL body");
   return h;
+}
+
+// An IsValid function: whether `check` (which fails for an id that is not
+// valid) passes. It sets the last error as any call does, so that a false
+// answer says why.
+template <typename F>
+proxBool valid(const char* function, F&& check) {
+  return guard(function, std::forward<F>(check)) == PROX_SUCCESS ? 1 : 0;
 }
 
 // Calls that change the scene's shape wait for the threads to stop.

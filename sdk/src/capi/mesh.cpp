@@ -169,6 +169,13 @@ proxResult proxMesh_Destroy(proxMeshId mesh) {
   });
 }
 
+proxBool proxMesh_IsValid(proxMeshId mesh) {
+  return valid("proxMesh_IsValid", [&] {
+    runtime::World* w = nullptr;
+    mesh_of(mesh, w);
+  });
+}
+
 proxResult proxMesh_GetInfo(proxMeshId mesh, proxMeshInfo* info) {
   return guard("proxMesh_GetInfo", [&] {
     need(info, "info");

@@ -23,9 +23,16 @@ proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
     need(world, "world");
     *world = proxWorldId{};
     need_def(*def, "proxDefaultWorldDef");
-    if (def->apiVersion != PROX_API_VERSION)
-      fail(PROX_ERROR_VERSION_MISMATCH, "def comes from API version " + std::to_string(def->apiVersion) +
-                                            ", the library is " + std::to_string(PROX_API_VERSION));
+    // A program built against an older minor version of the same major one
+    // runs on this library (what it knows is still here, in its place); a
+    // newer minor one or another major one does not.
+    const int32_t major = def->apiVersion >> 16, minor = def->apiVersion & 0xFFFF;
+    if (major != PROX_VERSION_MAJOR || minor > PROX_VERSION_MINOR)
+      fail(PROX_ERROR_VERSION_MISMATCH,
+           "def comes from API version " + std::to_string(major) + "." + std::to_string(minor) +
+               "; this library is " + std::to_string(PROX_VERSION_MAJOR) + "." +
+               std::to_string(PROX_VERSION_MINOR) + " and takes defs of " + std::to_string(PROX_VERSION_MAJOR) +
+               ".0 to " + std::to_string(PROX_VERSION_MAJOR) + "." + std::to_string(PROX_VERSION_MINOR));
     const int32_t method = enum_value(def->method);
     if (method != PROX_METHOD_PRECISE && method != PROX_METHOD_ORIGINAL && method != PROX_METHOD_REFERENCE)
       fail(PROX_ERROR_INVALID_ARGUMENT, "def->method is not a proxMethod");

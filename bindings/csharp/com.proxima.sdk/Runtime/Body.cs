@@ -14,6 +14,9 @@ namespace Proxima
 
         public bool IsNull => id.Index1 == 0;
 
+        /// <summary>Whether the body is alive in a live world. Game thread: false from any other.</summary>
+        public bool IsValid => Native.proxBody_IsValid(id);
+
         /// <summary>Static bodies do not move. While the threads run: a tool's pose is the
         /// one the haptic loop last read, and setting a held tool's pose is refused (Busy).</summary>
         public Pose Pose

@@ -16,6 +16,9 @@ namespace Proxima
         /// <summary>Zero-initialised: names no mesh.</summary>
         public bool IsNull => id.Index1 == 0;
 
+        /// <summary>Whether the mesh is alive in a live world. Game thread: false from any other.</summary>
+        public bool IsValid => Native.proxMesh_IsValid(id);
+
         public MeshInfo Info
         {
             get { Native.Check(Native.proxMesh_GetInfo(id, out MeshInfo info)); return info; }

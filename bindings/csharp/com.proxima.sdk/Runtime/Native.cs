@@ -154,6 +154,8 @@ namespace Proxima
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxMesh_Destroy(MeshId mesh);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Bool32 proxMesh_IsValid(MeshId mesh);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxMesh_GetInfo(MeshId mesh, out MeshInfo info);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxMesh_GetStats(MeshId mesh, out MeshStats stats);
@@ -194,6 +196,8 @@ namespace Proxima
         internal static extern Result proxWorld_CreateBody(WorldId world, ref BodyDef def, out BodyId body);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxBody_Destroy(BodyId body);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Bool32 proxBody_IsValid(BodyId body);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxBody_SetPose(BodyId body, ref Pose pose);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

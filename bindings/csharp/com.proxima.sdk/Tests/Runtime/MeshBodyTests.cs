@@ -186,8 +186,11 @@ namespace Proxima.Tests
             Mesh copy = cube;
             Body body = world.CreateBody(cube, BodyType.Static, Pose.Identity);
             Support.Throws(Result.InvalidArgument, "", cube.Destroy);
+            Assert.IsTrue(cube.IsValid && body.IsValid);
             body.Destroy();
+            Assert.IsFalse(body.IsValid);
             cube.Destroy();
+            Assert.IsFalse(copy.IsValid);
             Support.Throws(Result.InvalidHandle, "does not name a live mesh", () => { MeshInfo _ = copy.Info; });
             Mesh again = Support.Cube(world);
             Assert.AreNotEqual(cube, again, "a reused slot has a new generation");
