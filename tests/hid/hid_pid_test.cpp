@@ -1,0 +1,205 @@
+// HID PID force-feedback devices recognised from their report descriptors
+// (sdk/src/devices/hid_descriptor.h, hid_pid.h): the two real firmwares'
+// descriptors from the shared devices folder, against what their layouts
+// (../shared/devices/pid/LAYOUT.md) say of each field. Every field's offset
+// is also checked against the shared folder's own decoder by
+// hid_descriptor_test.py, through proxima_hid_descriptor_dump.
+#include "devices/hid_descriptor.h"
+#include "devices/hid_pid.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace prox::devices {
+namespace {
+
+std::vector<std::uint8_t> read(const std::string& name) {
+  std::ifstream in(std::string(PROX_SHARED_DEVICES_DIR) + "/" + name, std::ios::binary);
+  if (!in) ADD_FAILURE() << "missing " << PROX_SHARED_DEVICES_DIR << "/" << name;
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+PidLayout layout_of(const std::string& name) {
+  const std::vector<std::uint8_t> bytes = read(name);
+  HidDescriptor d;
+  const Status s = parse_hid_descriptor(bytes.data(), bytes.size(), d);
+  EXPECT_TRUE(s.is_ok()) << name << ": " << s.message();
+  PidLayout p;
+  const Status l = pid_layout_of(d, p);
+  EXPECT_TRUE(l.is_ok()) << name << ": " << l.message();
+  return p;
+}
+
+// Byte.bit of a slot, as LAYOUT.md writes it.
+std::string at(const PidSlot& s) { return std::to_string(s.bit / 8) + "." + std::to_string(s.bit % 8); }
+
+TEST(HidPid, OpenFfBoardIsATwoAxisJoystickWithSixteenBitDirectionsAndAMaskedControl) {
+  const PidLayout p = layout_of("pid/openffboard_1209_ffb0.rdesc.bin");
+  ASSERT_TRUE(p.pid);
+  EXPECT_EQ(p.axes, 2);
+  // Set Effect, report 0x01, 22 bytes.
+  EXPECT_EQ(p.effect_block.report_id, 0x01);
+  EXPECT_EQ(p.effect_block.report_bytes, 22u);
+  EXPECT_EQ(at(p.effect_type), "2.0");
+  EXPECT_EQ(p.constant_force_type, 1);
+  EXPECT_EQ(at(p.duration), "3.0");
+  EXPECT_EQ(p.duration.bits, 16u);
+  EXPECT_EQ(at(p.start_delay), "9.0");
+  EXPECT_EQ(at(p.gain), "11.0");
+  EXPECT_EQ(at(p.axis_enable[0]), "13.0");
+  EXPECT_EQ(at(p.axis_enable[1]), "13.1");
+  EXPECT_EQ(at(p.direction_enable), "13.2");
+  EXPECT_EQ(at(p.direction[0]), "14.0");
+  EXPECT_EQ(at(p.direction[1]), "16.0");
+  EXPECT_EQ(p.direction[0].bits, 16u);
+  EXPECT_EQ(p.direction[0].max, 36000);
+  // Set Constant Force, report 0x05: magnitude +-32767 at byte 2.
+  EXPECT_EQ(p.magnitude.report_id, 0x05);
+  EXPECT_EQ(p.magnitude.report_bytes, 4u);
+  EXPECT_EQ(at(p.magnitude), "2.0");
+  EXPECT_EQ(p.magnitude.bits, 16u);
+  EXPECT_EQ(p.magnitude.min, -32767);
+  EXPECT_EQ(p.magnitude.max, 32767);
+  // Effect Operation, report 0x0A: 1 start, 3 stop.
+  EXPECT_EQ(p.operation.report_id, 0x0A);
+  EXPECT_EQ(p.op_start, 1);
+  EXPECT_EQ(p.op_stop, 3);
+  // Device Control, report 0x0C: a bit mask; reset is 0C 08.
+  EXPECT_EQ(p.control.report_id, 0x0C);
+  EXPECT_TRUE(p.control_is_mask);
+  EXPECT_EQ(p.control.bits, 8u);
+  EXPECT_EQ(p.control_enable, 0x01);
+  EXPECT_EQ(p.control_reset, 0x08);
+  EXPECT_EQ(p.device_gain.report_id, 0x0D);
+  EXPECT_EQ(p.free_block.report_id, 0x0B);
+  // Feature reports: Create New Effect 0x11, Block Load 0x12, PID Pool 0x13.
+  EXPECT_EQ(p.create_type.report_id, 0x11);
+  EXPECT_EQ(p.create_type.report_bytes, 4u);
+  EXPECT_EQ(p.create_byte_count.bits, 10u);
+  EXPECT_EQ(p.load_block.report_id, 0x12);
+  EXPECT_EQ(p.load_block.report_bytes, 5u);
+  EXPECT_EQ(at(p.load_status), "2.0");
+  EXPECT_EQ(p.load_success, 1);
+  EXPECT_EQ(p.load_full, 2);
+  EXPECT_EQ(p.load_error, 3);
+  EXPECT_EQ(at(p.load_ram_available), "3.0");
+  EXPECT_EQ(p.pool_ram_size.report_id, 0x13);
+  EXPECT_EQ(at(p.pool_max_effects), "3.0");
+}
+
+TEST(HidPid, TheArduinoLibraryHasEightBitDirectionsAnIndexedControlAndTenThousandSteps) {
+  const PidLayout p = layout_of("pid/arduino_joystick_ffb_2341_8036.rdesc.bin");
+  ASSERT_TRUE(p.pid);
+  EXPECT_EQ(p.axes, 2);
+  EXPECT_EQ(p.effect_block.report_bytes, 18u);
+  EXPECT_FALSE(p.start_delay.present);
+  EXPECT_EQ(at(p.gain), "9.0");
+  EXPECT_EQ(at(p.axis_enable[1]), "11.1");
+  EXPECT_EQ(at(p.direction[0]), "12.0");
+  EXPECT_EQ(at(p.direction[1]), "13.0");
+  EXPECT_EQ(p.direction[0].bits, 8u);
+  EXPECT_EQ(p.direction[0].max, 255);
+  EXPECT_EQ(p.magnitude.min, -10000);
+  EXPECT_EQ(p.magnitude.max, 10000);
+  // Device Control: an index; reset is 0C 04.
+  EXPECT_FALSE(p.control_is_mask);
+  EXPECT_EQ(p.control.bits, 8u);
+  EXPECT_EQ(p.control_enable, 1);
+  EXPECT_EQ(p.control_reset, 4);
+  EXPECT_EQ(p.create_type.report_id, 0x05);
+  EXPECT_EQ(p.load_block.report_id, 0x06);
+  EXPECT_EQ(p.pool_ram_size.report_id, 0x07);
+}
+
+TEST(HidPid, TheOneAxisBuildIsAWheel) {
+  const PidLayout p = layout_of("pid/openffboard_1209_ffb0_1axis.rdesc.bin");
+  ASSERT_TRUE(p.pid);
+  EXPECT_EQ(p.axes, 1);
+  EXPECT_FALSE(p.axis_enable[1].present);
+  EXPECT_FALSE(p.direction[1].present);
+}
+
+TEST(HidPid, DevicesWithoutPidReportsAreNotForceFeedback) {
+  for (const char* name : {"ds4v2_054c_09cc.rdesc.bin", "dualsense_054c_0ce6.rdesc.bin",
+                           "spacemouse_wireless_256f_c62e.rdesc.bin", "spacenavigator_046d_c626_228b.rdesc.bin"}) {
+    const std::vector<std::uint8_t> bytes = read(name);
+    HidDescriptor d;
+    ASSERT_TRUE(parse_hid_descriptor(bytes.data(), bytes.size(), d).is_ok()) << name;
+    EXPECT_FALSE(d.fields.empty()) << name;
+    PidLayout p;
+    EXPECT_TRUE(pid_layout_of(d, p).is_ok()) << name;
+    EXPECT_FALSE(p.pid) << name;
+  }
+}
+
+TEST(HidPid, APidDescriptorMissingWhatAConstantForceNeedsIsNamed) {
+  // The OpenFFBoard descriptor with its Set Constant Force report's
+  // Magnitude usage (0x70) made another (0x71, Phase).
+  std::vector<std::uint8_t> bytes = read("pid/openffboard_1209_ffb0.rdesc.bin");
+  bool changed = false;
+  for (std::size_t i = 0; i + 3 < bytes.size() && !changed; ++i)
+    if (bytes[i] == 0x09 && bytes[i + 1] == 0x73) {  // Usage (Set Constant Force Report)
+      for (std::size_t j = i + 2; j + 1 < bytes.size(); ++j)
+        if (bytes[j] == 0x09 && bytes[j + 1] == 0x70) {
+          bytes[j + 1] = 0x71;
+          changed = true;
+          break;
+        }
+    }
+  ASSERT_TRUE(changed);
+  HidDescriptor d;
+  ASSERT_TRUE(parse_hid_descriptor(bytes.data(), bytes.size(), d).is_ok());
+  PidLayout p;
+  const Status s = pid_layout_of(d, p);
+  EXPECT_FALSE(s.is_ok());
+  EXPECT_NE(s.message().find("Set Constant Force report's Magnitude"), std::string::npos) << s.message();
+  EXPECT_FALSE(p.pid);
+}
+
+TEST(HidDescriptor, BrokenDescriptorsAreRefusedWithTheByteNamed) {
+  struct Case {
+    std::vector<std::uint8_t> bytes;
+    const char* says;
+  };
+  const Case cases[] = {
+      {{0x05, 0x01, 0x09, 0x04, 0xA1, 0x01}, "left open"},            // collection never closed
+      {{0xC0}, "End Collection without"},                               // closed, never opened
+      {{0x05}, "past the end"},                                         // truncated item
+      {{0xB4}, "Pop without a Push"},                                   //
+      {{0x85, 0x00}, "report id 0"},                                    //
+      {{0x29, 0x05}, "Usage Maximum without"},                          //
+      {{0x75, 0x08, 0x97, 0xFF, 0xFF, 0x00, 0x00, 0x81, 0x02}, "report count"},  // 65,535 slots
+      {{0x75, 0x40, 0x95, 0x01, 0x81, 0x02}, "64-bit data field"},      //
+      {{0xFE, 0x10}, "truncated long item"},                            //
+  };
+  for (const Case& c : cases) {
+    HidDescriptor d;
+    const Status s = parse_hid_descriptor(c.bytes.data(), c.bytes.size(), d);
+    EXPECT_FALSE(s.is_ok()) << c.says;
+    EXPECT_NE(s.message().find(c.says), std::string::npos) << s.message();
+    EXPECT_NE(s.message().find("byte "), std::string::npos) << s.message();
+    EXPECT_TRUE(d.fields.empty());
+  }
+}
+
+TEST(HidDescriptor, BitFieldsReadAndWriteLittleEndianAndSigned) {
+  std::uint8_t report[4] = {0x05, 0, 0, 0};
+  write_hid_bits(report, 4, 16, 16, -32767);  // Set Constant Force's magnitude
+  EXPECT_EQ(report[2], 0x01);
+  EXPECT_EQ(report[3], 0x80);
+  EXPECT_EQ(read_hid_bits(report, 4, 16, 16, true), -32767);
+  EXPECT_EQ(read_hid_bits(report, 4, 16, 16, false), 0x8001);
+  write_hid_bits(report, 4, 9, 3, 5);  // inside a byte, across nothing else
+  EXPECT_EQ(report[1], 0x0A);
+  EXPECT_EQ(read_hid_bits(report, 4, 9, 3, false), 5);
+  write_hid_bits(report, 4, 30, 8, 0xFF);  // past the end: nothing
+  EXPECT_EQ(report[3], 0x80);
+  EXPECT_EQ(read_hid_bits(report, 4, 30, 8, false), 0);
+}
+
+}  // namespace
+}  // namespace prox::devices
