@@ -6,9 +6,11 @@
 // hid_descriptor_test.py, through proxima_hid_descriptor_dump.
 #include "devices/hid_descriptor.h"
 #include "devices/hid_pid.h"
+#include "devices/hid_pid_reports.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -158,6 +160,66 @@ TEST(HidPid, APidDescriptorMissingWhatAConstantForceNeedsIsNamed) {
   EXPECT_FALSE(s.is_ok());
   EXPECT_NE(s.message().find("Set Constant Force report's Magnitude"), std::string::npos) << s.message();
   EXPECT_FALSE(p.pid);
+}
+
+using Bytes = std::vector<std::uint8_t>;
+
+// The host sequence's bytes, as ../shared/devices/pid/PROTOCOL.md gives
+// them for each device (its tables in sections 2 to 6).
+TEST(HidPidReports, TheHostSequenceIsByteForByteTheProtocols) {
+  const PidLayout offb = layout_of("pid/openffboard_1209_ffb0.rdesc.bin");
+  const PidLayout ard = layout_of("pid/arduino_joystick_ffb_2341_8036.rdesc.bin");
+  ASSERT_TRUE(offb.pid && ard.pid);
+  // (a) Reset, stop all, enable; full device gain.
+  EXPECT_EQ(pid_device_control(offb, PidControl::Reset), (Bytes{0x0c, 0x08}));
+  EXPECT_EQ(pid_device_control(ard, PidControl::Reset), (Bytes{0x0c, 0x04}));
+  EXPECT_EQ(pid_device_control(offb, PidControl::StopAllEffects), (Bytes{0x0c, 0x04}));
+  EXPECT_EQ(pid_device_control(ard, PidControl::StopAllEffects), (Bytes{0x0c, 0x03}));
+  EXPECT_EQ(pid_device_control(offb, PidControl::EnableActuators), (Bytes{0x0c, 0x01}));
+  EXPECT_EQ(pid_device_control(ard, PidControl::EnableActuators), (Bytes{0x0c, 0x01}));
+  EXPECT_EQ(pid_device_gain(offb, 1.0), (Bytes{0x0d, 0xff}));
+  EXPECT_EQ(pid_device_gain(ard, 1.0), (Bytes{0x0d, 0xff}));
+  // (b) Create a constant force; get Block Load; its answer.
+  EXPECT_EQ(pid_create_constant_force(offb), (Bytes{0x11, 0x01, 0x00, 0x00}));
+  EXPECT_EQ(pid_create_constant_force(ard), (Bytes{0x05, 0x01, 0x00, 0x00}));
+  EXPECT_EQ(pid_block_load_request(offb), (Bytes{0x12, 0x00, 0x00, 0x00, 0x00}));
+  EXPECT_EQ(pid_block_load_request(ard), (Bytes{0x06, 0x00, 0x00, 0x00, 0x00}));
+  const Bytes loaded{0x12, 0x01, 0x01, 0x34, 0x12}, full{0x06, 0x00, 0x02, 0x00, 0x00};
+  const Bytes error{0x12, 0x00, 0x03, 0x00, 0x00}, pending{0x12, 0x00, 0x00, 0x00, 0x00};
+  EXPECT_EQ(pid_parse_block_load(offb, loaded.data(), loaded.size()).status, PidLoadStatus::Success);
+  EXPECT_EQ(pid_parse_block_load(offb, loaded.data(), loaded.size()).index, 1);
+  EXPECT_EQ(pid_parse_block_load(ard, full.data(), full.size()).status, PidLoadStatus::Full);
+  EXPECT_EQ(pid_parse_block_load(offb, error.data(), error.size()).status, PidLoadStatus::Error);
+  EXPECT_EQ(pid_parse_block_load(offb, pending.data(), pending.size()).status, PidLoadStatus::Pending);
+  EXPECT_EQ(pid_parse_block_load(ard, loaded.data(), loaded.size()).status, PidLoadStatus::Pending)
+      << "another report's id";
+  EXPECT_EQ(pid_parse_block_load(offb, loaded.data(), 3).status, PidLoadStatus::Pending) << "short";
+  // Set Effect: block 1, direction 90 degrees (9000), full gain. PROTOCOL's
+  // example has an infinite duration (ff ff); a finite one is sent here:
+  // 100 ms, 64 00.
+  EXPECT_EQ(pid_set_constant_effect(offb, 1, 100, 9000),
+            (Bytes{0x01, 0x01, 0x01, 0x64, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+                   0xff, 0x00, 0x04, 0x28, 0x23, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00}));
+  EXPECT_EQ(pid_set_constant_effect(ard, 1, 100, 9000),
+            (Bytes{0x01, 0x01, 0x01, 0x64, 0x00, 0x00, 0x00, 0x00, 0x00, 0xff, 0x00, 0x04, 0x3f, 0x00, 0x00, 0x00,
+                   0x00, 0x00}));
+  // A duration past the field stops one short of its top, which the
+  // Arduino library takes for "infinite".
+  const Bytes forever = pid_set_constant_effect(ard, 1, 1000000, 0);
+  EXPECT_EQ(read_hid_bits(forever.data(), forever.size(), 24, 16, false), 32766);
+  // (c) Set Constant Force: Linux's levels +0x4000 and -0x4000.
+  EXPECT_EQ(pid_set_constant_force(offb, 1, 16384.0 / 32767.0), (Bytes{0x05, 0x01, 0x00, 0x40}));
+  EXPECT_EQ(pid_set_constant_force(ard, 1, 16384.0 / 32767.0), (Bytes{0x05, 0x01, 0x88, 0x13}));
+  EXPECT_EQ(pid_set_constant_force(offb, 1, -16384.0 / 32768.0), (Bytes{0x05, 0x01, 0x00, 0xc0}));
+  EXPECT_EQ(pid_set_constant_force(ard, 1, -16384.0 / 32768.0), (Bytes{0x05, 0x01, 0x78, 0xec}));
+  // Beyond full scale, or not a number: clamped, or nothing.
+  EXPECT_EQ(pid_set_constant_force(ard, 1, 7.0), (Bytes{0x05, 0x01, 0x10, 0x27}));
+  EXPECT_EQ(pid_set_constant_force(offb, 1, NAN), (Bytes{0x05, 0x01, 0x00, 0x00}));
+  // (d) Start once, stop; (e) free.
+  EXPECT_EQ(pid_effect_start(offb, 1, 1), (Bytes{0x0a, 0x01, 0x01, 0x01}));
+  EXPECT_EQ(pid_effect_start(ard, 1, 1), (Bytes{0x0a, 0x01, 0x01, 0x01}));
+  EXPECT_EQ(pid_effect_stop(offb, 1), (Bytes{0x0a, 0x01, 0x03, 0x01}));
+  EXPECT_EQ(pid_block_free(ard, 1), (Bytes{0x0b, 0x01}));
 }
 
 TEST(HidDescriptor, BrokenDescriptorsAreRefusedWithTheByteNamed) {
