@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -220,6 +221,53 @@ TEST(HidPidReports, TheHostSequenceIsByteForByteTheProtocols) {
   EXPECT_EQ(pid_effect_start(ard, 1, 1), (Bytes{0x0a, 0x01, 0x01, 0x01}));
   EXPECT_EQ(pid_effect_stop(offb, 1), (Bytes{0x0a, 0x01, 0x03, 0x01}));
   EXPECT_EQ(pid_block_free(ard, 1), (Bytes{0x0b, 0x01}));
+}
+
+// What each firmware does with a direction and a magnitude (PROTOCOL.md,
+// section 7), to check the rendering against.
+void firmware_push(const PidForce& f, PidForceSign sign, double& fx, double& fy) {
+  const double theta = f.direction_centidegrees * 3.14159265358979323846 / 18000.0;
+  const double s = static_cast<double>(static_cast<int>(sign));
+  fx = -s * f.magnitude * std::sin(theta);  // OpenFFBoard: torque_x = -M sin theta
+  fy = s * f.magnitude * std::cos(theta);   //              torque_y = +M cos theta
+}
+
+TEST(HidPidReports, AForceIsRenderedAsTheFirmwarePushesIt) {
+  // RENDERING.md's checks: a push to the right is 27000, towards the user 0.
+  EXPECT_EQ(pid_force_of(2.0, 0.0, 4.0, 2, PidForceSign::DirectInput).direction_centidegrees, 27000u);
+  EXPECT_EQ(pid_force_of(0.0, 2.0, 4.0, 2, PidForceSign::DirectInput).direction_centidegrees, 0u);
+  EXPECT_EQ(pid_force_of(0.0, -2.0, 4.0, 2, PidForceSign::DirectInput).direction_centidegrees, 18000u);
+  EXPECT_EQ(pid_force_of(-2.0, 0.0, 4.0, 2, PidForceSign::DirectInput).direction_centidegrees, 9000u);
+  EXPECT_EQ(pid_force_of(2.0, 0.0, 4.0, 2, PidForceSign::Opposite).direction_centidegrees, 9000u);
+  EXPECT_DOUBLE_EQ(pid_force_of(2.0, 0.0, 4.0, 2, PidForceSign::DirectInput).magnitude, 0.5);
+  // Many pushes, both firmwares: what the firmware makes of the force is the
+  // push itself, to the direction's quantum (0.01 degree), or full scale.
+  for (const PidForceSign sign : {PidForceSign::DirectInput, PidForceSign::Opposite}) {
+    for (int k = 0; k < 720; ++k) {
+      const double a = k * 0.5 * 3.14159265358979323846 / 180.0 + 0.001, size = 0.25 + 0.01 * (k % 100);
+      const double fx = size * std::cos(a), fy = size * std::sin(a);
+      const PidForce f = pid_force_of(fx, fy, 1.0, 2, sign);
+      ASSERT_LT(f.direction_centidegrees, 36000u);
+      double gx = 0, gy = 0;
+      firmware_push(f, sign, gx, gy);
+      const double want = std::min(size, 1.0) / size;  // clipped to full scale
+      EXPECT_NEAR(gx, fx * want, 2e-4) << k;
+      EXPECT_NEAR(gy, fy * want, 2e-4) << k;
+    }
+  }
+  // A wheel: east, signed; the firmware's push along x is the force's.
+  for (const PidForceSign sign : {PidForceSign::DirectInput, PidForceSign::Opposite})
+    for (const double fx : {-3.0, -0.5, 0.0, 0.5, 3.0}) {
+      const PidForce f = pid_force_of(fx, 7.0, 2.0, 1, sign);
+      EXPECT_EQ(f.direction_centidegrees, 9000u);
+      double gx = 0, gy = 0;
+      firmware_push(f, sign, gx, gy);
+      EXPECT_NEAR(gx * 2.0, std::clamp(fx, -2.0, 2.0), 1e-12) << fx;
+    }
+  // Nothing to push, or nonsense: no force.
+  EXPECT_EQ(pid_force_of(0.0, 0.0, 1.0, 2, PidForceSign::DirectInput).magnitude, 0.0);
+  EXPECT_EQ(pid_force_of(NAN, 1.0, 1.0, 2, PidForceSign::DirectInput).magnitude, 0.0);
+  EXPECT_EQ(pid_force_of(1.0, 1.0, 0.0, 2, PidForceSign::DirectInput).magnitude, 0.0);
 }
 
 TEST(HidDescriptor, BrokenDescriptorsAreRefusedWithTheByteNamed) {

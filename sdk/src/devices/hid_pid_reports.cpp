@@ -19,7 +19,30 @@ void put(std::vector<std::uint8_t>& r, const PidSlot& s, std::int64_t value) {
   write_hid_bits(r.data(), r.size(), s.bit, s.bits, value);
 }
 
+constexpr double kPi = 3.14159265358979323846;
+
 }  // namespace
+
+PidForce pid_force_of(double fx, double fy, double max_force, int axes, PidForceSign sign) {
+  PidForce out;
+  if (!(max_force > 0.0) || !std::isfinite(fx) || !std::isfinite(fy)) return out;
+  const double s = static_cast<double>(static_cast<int>(sign));
+  if (axes == 1) {
+    // East (9000): a DirectInput magnitude pushes along (-1, 0).
+    out.direction_centidegrees = 9000;
+    out.magnitude = std::clamp(-s * fx / max_force, -1.0, 1.0);
+    return out;
+  }
+  const double size = std::hypot(fx, fy);
+  if (!(size > 0.0)) return out;
+  // (-sin theta, cos theta) = the push's direction (for the opposite sign,
+  // the push's reverse): theta = atan2(-px, py).
+  const double theta = std::atan2(-s * fx, s * fy);
+  const double centi = std::fmod(theta * (18000.0 / kPi) + 36000.0, 36000.0);
+  out.direction_centidegrees = static_cast<std::uint32_t>(std::lround(centi)) % 36000u;
+  out.magnitude = std::min(size / max_force, 1.0);
+  return out;
+}
 
 std::vector<std::uint8_t> pid_device_control(const PidLayout& p, PidControl command) {
   std::vector<std::uint8_t> r = report_of(p.control);

@@ -11,6 +11,29 @@
 
 namespace prox::devices {
 
+// How a firmware turns a constant force's direction into a push. DirectInput
+// (and OpenFFBoard): a magnitude M at direction theta pushes the grip along
+// (-sin theta, cos theta), x to the right and y towards the user. The
+// Arduino library computes the opposite sign (../shared/devices/pid/
+// PROTOCOL.md, section 7). Which one a device follows is the device's
+// calibration, not its descriptor's.
+enum class PidForceSign { DirectInput = 1, Opposite = -1 };
+
+// One constant force as a PID device takes it.
+struct PidForce {
+  std::uint32_t direction_centidegrees = 0;  // [0, 36000), clockwise from north (away from the user)
+  double magnitude = 0.0;                    // [-1, 1] of the device's full scale
+};
+
+// The force to play for a push (fx to the right, fy towards the user, in
+// newtons, in the device's frame: what is left of the tool's force once its
+// component along the shaft is dropped) on a device whose full scale is
+// `max_force` newtons. Two axes: the push's direction and its size, clipped
+// to full scale. One axis (a wheel, whose only axis is X): direction fixed
+// at east, the magnitude signed, fy ignored. A zero or non-finite push is no
+// force (direction 0).
+PidForce pid_force_of(double fx, double fy, double max_force, int axes, PidForceSign sign);
+
 enum class PidControl { EnableActuators, DisableActuators, StopAllEffects, Reset };
 
 enum class PidLoadStatus { Pending, Success, Full, Error };
