@@ -3,7 +3,8 @@
 //
 //   proxima_bench [--scene NAME|GROUP|all] [--poses N] [--out DIR] [--reference-every K]
 //                 [--local-reps R] [--force-reps R] [--meshes DIR] [--scaling-poses N]
-//                 [--scaling-reference-every K] [--cad-poses N] [--max-triangles N] [--builds N] [--list]
+//                 [--scaling-reference-every K] [--cad-poses N] [--max-triangles N] [--builds N]
+//                 [--workers N] [--list]
 //
 // Scenes come in groups: bunny (bunny against bunny on paths T and R, the
 // paper's hard and soft settings, many bodies), cad (2CylinderEngine and
@@ -49,8 +50,8 @@ namespace {
 const char* kUsage =
     "usage: proxima_bench [--scene NAME|GROUP|all] [--poses N] [--out DIR] [--reference-every K]\n"
     "                     [--local-reps R] [--force-reps R] [--meshes DIR] [--scaling-poses N]\n"
-    "                     [--scaling-reference-every K] [--cad-poses N] [--max-triangles N] [--builds N] "
-    "[--list]";
+    "                     [--scaling-reference-every K] [--cad-poses N] [--max-triangles N] [--builds N]\n"
+    "                     [--workers N (threads the precise global search splits over; 1)] [--list]";
 
 [[noreturn]] void usage_error(const std::string& message) { throw UserError(message + "\n" + kUsage); }
 
@@ -88,6 +89,8 @@ int run(int argc, char** argv) {
       opt.scaling_poses = parse_int(next(), "--scaling-poses", 2);
     else if (a == "--scaling-reference-every")
       opt.scaling_reference_every = parse_int(next(), "--scaling-reference-every", 0);
+    else if (a == "--workers")
+      opt.workers = parse_int(next(), "--workers", 1);
     else if (a == "--builds")
       opt.builds = parse_int(next(), "--builds", 1);
     else if (a == "--cad-poses")

@@ -1,4 +1,5 @@
 #include "scene_run.h"
+#include "common/worker_pool.h"
 
 #include "contact/global_search.h"
 #include "contact/proximity.h"
@@ -98,12 +99,14 @@ SceneRun run_scene(const Scene& scene, const Model& a, const Model& b, int poses
   PairState state;
   MethodState methods[2] = {{Method::Precise, {}, {}, {}}, {Method::Original, {}, {}, {}}};
   std::vector<LmdPair> scratch;
+  WorkerPool pool(static_cast<unsigned>(std::max(1, opt.workers)));
 #ifndef PROX_BENCH_WITH_COAL
   (void)coal;
 #endif
   for (std::size_t i = 0; i < run.path.size(); ++i) {
     const PosePoint& p = run.path[i];
-    const PairQuery q = make_query(a, b, p.pose, cutoff);
+    PairQuery q = make_query(a, b, p.pose, cutoff);
+    q.pool = &pool;
     const Vec3 reference_point = p.pose.apply(b.box_centre);
     Row base;
     base.step = static_cast<int>(i);

@@ -25,6 +25,7 @@ struct Options {
   int max_triangles = 0;                // skip the scaling levels above this (0: none)
   int cad_poses = 300;                  // poses per CAD scene (at most --poses)
   int builds = 3;                       // hierarchy builds per mesh and library; the median is reported
+  int workers = 1;                      // threads the precise global search splits over (PairQuery::pool)
   std::string coal_version;             // the peer's, when it runs
 };
 

@@ -171,59 +171,81 @@ void for_child_pairs(const Snch& ta, const Snch& tb, std::uint32_t ia, std::uint
   }
 }
 
-// Simultaneous descent of both trees; `use_cones` switches G2/G3 on;
-// `use_boxes` adds the box test to G1's sphere test (the same pairs within the
-// cutoff reach the leaves, far fewer beyond it); `leaf` is called for every
-// leaf pair that passes. `cut(ia, ib)` is asked about every inner node pair
+// What descend() makes of one node pair, counted in `stats`: rejected by
+// G1 (and the box test with `use_boxes`), G2 or G3 (with `use_cones`), or
+// passed, as a pair of leaves or with inner nodes to split.
+enum class Visited { Rejected, Leaves, Inner };
+inline Visited visit_node_pair(const PairQuery& q, const Frames& frames, bool use_cones, bool use_boxes,
+                               GlobalSearchStats& stats, std::uint32_t ia, std::uint32_t ib) {
+  const Snch& ta = *q.snch_a;
+  const Snch& tb = *q.snch_b;
+  ++stats.node_pairs;
+  const SnchNode& na = ta.node(ia);
+  const SnchNode& nb = tb.node(ib);
+  const NodePair p{na,
+                   nb,
+                   frames.b_to_a.apply(nb.center),
+                   frames.b_to_a.rotate(nb.cone.axis),
+                   ta.two_sided(),
+                   tb.two_sided()};
+  if (g1_rejects(p, q.cutoff) ||
+      (use_boxes && boxes_farther_than(frames.axes, ta.box(ia), tb.box(ib),
+                                       frames.b_to_a.apply(tb.box(ib).center) - ta.box(ia).center, q.cutoff))) {
+    ++stats.rejected_g1;
+    return Visited::Rejected;
+  }
+  if (use_cones && g2_rejects(p)) {
+    ++stats.rejected_g2;
+    return Visited::Rejected;
+  }
+  if (use_cones && g3_rejects(p)) {
+    ++stats.rejected_g3;
+    return Visited::Rejected;
+  }
+  if (na.is_leaf() && nb.is_leaf()) {
+    ++stats.leaf_pairs;
+    return Visited::Leaves;
+  }
+  return Visited::Inner;
+}
+
+// Simultaneous descent of both trees from node pair (root_a, root_b);
+// `use_cones` switches G2/G3 on; `use_boxes` adds the box test to G1's
+// sphere test (the same pairs within the cutoff reach the leaves, far fewer
+// beyond it); `leaf` is called for every leaf pair that passes, depth first,
+// first children first. `cut(ia, ib)` is asked about every inner node pair
 // that passes: when it returns true, the pair is taken as handled and not
 // descended.
 template <typename Leaf, typename Cut>
 void descend(const PairQuery& q, const Frames& frames, bool use_cones, bool use_boxes,
-             GlobalSearchStats& stats, Leaf leaf, Cut cut) {
+             GlobalSearchStats& stats, Leaf leaf, Cut cut, std::uint32_t root_a = 0, std::uint32_t root_b = 0) {
   const Snch& ta = *q.snch_a;
   const Snch& tb = *q.snch_b;
   if (ta.nodes().empty() || tb.nodes().empty()) return;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> stack;
   stack.reserve(256);
-  stack.emplace_back(0u, 0u);
+  stack.emplace_back(root_a, root_b);
   while (!stack.empty()) {
     const auto [ia, ib] = stack.back();
     stack.pop_back();
-    ++stats.node_pairs;
-    const SnchNode& na = ta.node(ia);
-    const SnchNode& nb = tb.node(ib);
-    const NodePair p{na,
-                     nb,
-                     frames.b_to_a.apply(nb.center),
-                     frames.b_to_a.rotate(nb.cone.axis),
-                     ta.two_sided(),
-                     tb.two_sided()};
-    if (g1_rejects(p, q.cutoff) ||
-        (use_boxes &&
-         boxes_farther_than(frames.axes, ta.box(ia), tb.box(ib),
-                            frames.b_to_a.apply(tb.box(ib).center) - ta.box(ia).center, q.cutoff))) {
-      ++stats.rejected_g1;
-      continue;
-    }
-    if (use_cones && g2_rejects(p)) {
-      ++stats.rejected_g2;
-      continue;
-    }
-    if (use_cones && g3_rejects(p)) {
-      ++stats.rejected_g3;
-      continue;
-    }
-    if (na.is_leaf() && nb.is_leaf()) {
-      ++stats.leaf_pairs;
-      leaf(na.first, nb.first);
-    } else if (cut(ia, ib)) {
-      continue;
-    } else if (split_a(na, nb)) {
-      stack.emplace_back(na.second, ib);
-      stack.emplace_back(na.first, ib);
-    } else {
-      stack.emplace_back(ia, nb.second);
-      stack.emplace_back(ia, nb.first);
+    switch (visit_node_pair(q, frames, use_cones, use_boxes, stats, ia, ib)) {
+      case Visited::Rejected:
+        break;
+      case Visited::Leaves:
+        leaf(ta.node(ia).first, tb.node(ib).first);
+        break;
+      case Visited::Inner: {
+        if (cut(ia, ib)) break;
+        const SnchNode &na = ta.node(ia), &nb = tb.node(ib);
+        if (split_a(na, nb)) {
+          stack.emplace_back(na.second, ib);
+          stack.emplace_back(na.first, ib);
+        } else {
+          stack.emplace_back(ia, nb.second);
+          stack.emplace_back(ia, nb.first);
+        }
+        break;
+      }
     }
   }
 }

@@ -11,6 +11,8 @@
 
 namespace prox {
 
+class WorkerPool;
+
 // A feature named mesh-wide: a welded vertex id, an edge id (Mesh::edge_id)
 // or a triangle id. Two LMDs on the same pair of mesh features are one.
 struct MeshFeature {
@@ -84,6 +86,9 @@ struct PairQuery {
   bool use_cones = true;
   // How find_lmds merges the precise and reference LMDs into patches.
   PatchSettings patches = PatchSettings{};
+  // Workers the precise search may split its descent over (null or one
+  // thread: it runs alone). The answer is the same bit for bit either way.
+  WorkerPool* pool = nullptr;
 };
 
 }  // namespace prox
