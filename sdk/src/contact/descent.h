@@ -1,5 +1,6 @@
 // The simultaneous descent of two SNCHs shared by the searches. Private to
-// the contact layer.
+// the contact layer, and the constrained proxy's exact check
+// (coupling/clearance.cpp), which culls with the same box test.
 #pragma once
 
 #include "contact/global_search.h"

@@ -1,8 +1,9 @@
 // The proxy's safety check: whether any triangle pair of two meshes is
-// closer than a distance, by depth-first descent of their sphere trees.
+// closer than a distance, by depth-first descent of their sphere trees
+// (a node pair culled by its spheres or its boxes, as the searches cull).
 // The same decision as contact/global_search.h's any_closer_than (exact at
 // the leaves), without its best-first heap: a check that passes must visit
-// every node pair whose spheres come that close anyway, so the order buys
+// every node pair whose bounds come that close anyway, so the order buys
 // nothing there and a stack costs less per pair.
 #pragma once
 
