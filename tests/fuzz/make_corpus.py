@@ -2,7 +2,8 @@
 """Seed corpora for the fuzz targets, made from the shared assets (never
 committed): small glTF/GLB samples as they are, the .gltf samples with their
 external buffers embedded as data URIs (a fuzzed file has nothing beside it),
-and a cut-down bunny OBJ. The hand-written seeds in tests/fuzz/seeds are
+a cut-down bunny OBJ, and the real HID report descriptors of the shared
+devices folder beside the assets. The hand-written seeds in tests/fuzz/seeds are
 added too.
 
     make_corpus.py ASSETS_DIR OUT_DIR
@@ -52,7 +53,7 @@ def main():
     assets, out = sys.argv[1], sys.argv[2]
     here = os.path.dirname(os.path.abspath(__file__))
     corpora = {name: os.path.join(out, name) for name in
-               ("obj", "poses", "gltf", "gltf_capi", "create_mesh", "capi")}
+               ("obj", "poses", "gltf", "gltf_capi", "create_mesh", "capi", "hid_descriptor")}
     for d in corpora.values():
         os.makedirs(d, exist_ok=True)
 
@@ -72,6 +73,14 @@ def main():
         put("gltf", os.path.basename(os.path.dirname(rel)) + ".gltf", data)
         put("gltf_capi", os.path.basename(os.path.dirname(rel)) + ".gltf", data)
     put("obj", "bunny-400.obj", bunny_cut(os.path.join(assets, "bunny.obj"), 400))
+    devices = os.path.join(os.path.dirname(os.path.normpath(assets)), "devices")
+    for sub in ("", "pid"):
+        folder = os.path.join(devices, sub)
+        if os.path.isdir(folder):
+            for name in sorted(os.listdir(folder)):
+                if name.endswith(".rdesc.bin"):
+                    with open(os.path.join(folder, name), "rb") as f:
+                        put("hid_descriptor", name, f.read())
 
     for target, d in corpora.items():
         seeds = os.path.join(here, "seeds", target)
