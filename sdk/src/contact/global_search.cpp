@@ -121,7 +121,7 @@ struct PreciseLeaf {
 
 // The precise descent split over q.pool's threads, with the serial
 // descent's answer bit for bit: the node pairs near the roots are visited in
-// the serial order until there are a few per thread, and the descents below
+// the serial order until there are 64 per thread (contact lies under few of them: many small pieces, handed out one at a time, even the load), and the descents below
 // them, each with its own candidates and counts, are joined in that order,
 // which is the serial depth-first order. No leaf budget here (its count runs
 // across the whole descent, in order).
@@ -132,7 +132,7 @@ void precise_split(const PairQuery& q, const Frames& frames, std::vector<LmdPair
   };
   const Snch& ta = *q.snch_a;
   const Snch& tb = *q.snch_b;
-  const std::size_t want = 8 * std::size_t{q.pool->size()};
+  const std::size_t want = 64 * std::size_t{q.pool->size()};
   std::vector<Item> items{{0u, 0u, false}}, next;
   // Rounds of visiting every unvisited item and putting its children in its
   // place, in order, until there are enough (or nothing is left to split).
