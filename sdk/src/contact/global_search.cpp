@@ -121,10 +121,11 @@ struct PreciseLeaf {
 
 // The precise descent split over q.pool's threads, with the serial
 // descent's answer bit for bit: the node pairs near the roots are visited in
-// the serial order until there are 64 per thread (contact lies under few of them: many small pieces, handed out one at a time, even the load), and the descents below
-// them, each with its own candidates and counts, are joined in that order,
-// which is the serial depth-first order. No leaf budget here (its count runs
-// across the whole descent, in order).
+// the serial order until there are 64 per thread (contact lies under few of
+// them: many small pieces, handed out one at a time, even the load), and the
+// descents below them, each with its own candidates and counts, are joined
+// in that order, which is the serial depth-first order. No leaf budget here
+// (its count runs across the whole descent, in order).
 void precise_split(const PairQuery& q, const Frames& frames, std::vector<LmdPair>& out, GlobalSearchStats& stats) {
   struct Item {
     std::uint32_t a, b;
