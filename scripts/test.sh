@@ -30,7 +30,16 @@ need_packages "${WINDOWS_PACKAGES[@]}"
 jobs=$(nproc)
 # Each stage says when it starts, so a slow CI run shows where its time went
 # (the whole run must stay under 30 minutes).
-stage() { echo "== $* [at $((SECONDS / 60)) min $((SECONDS % 60)) s]"; }
+# With the CPU time of everything run so far (bash's times, children's user +
+# system), which a busy machine stretches far less than the wall-clock time.
+stage() {
+  mkdir -p build
+  times >build/times.txt
+  local cpu
+  cpu=$(awk 'END { split($1, u, "m"); split($2, s, "m"); printf "%d", u[1] * 60 + u[2] + s[1] * 60 + s[2] }' \
+    build/times.txt)
+  echo "== $* [at $((SECONDS / 60)) min $((SECONDS % 60)) s, CPU so far $((cpu / 60)) min $((cpu % 60)) s]"
+}
 configure() {  # configure DIR [cmake args...]
   local dir=$1
   shift
