@@ -27,6 +27,16 @@ need_packages "${INSTALL_PACKAGES[@]}"
 # The Windows build (scripts/windows.sh): MinGW-w64, Wine, GoogleTest's sources.
 need_packages "${WINDOWS_PACKAGES[@]}"
 
+# ccache: within one run the library is compiled with the release build's
+# flags three times (the release build, install.subdirectory's vendored
+# build, the Python wheel); the later two are then cache hits. Every build
+# below goes through it (the consumers and pip inherit the variables). The
+# cache is build/ccache unless CCACHE_DIR says otherwise.
+need_packages ccache
+export CCACHE_DIR=${CCACHE_DIR:-$(pwd)/build/ccache}
+export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache
+ccache --zero-stats >/dev/null
+
 jobs=$(nproc)
 # Each stage says when it starts, so a slow CI run shows where its time went
 # (the whole run must stay under 30 minutes).
@@ -43,7 +53,8 @@ stage() {
 configure() {  # configure DIR [cmake args...]
   local dir=$1
   shift
-  cmake -S . -B "$dir" -G Ninja -DPROX_WARNINGS_AS_ERRORS=ON -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" "$@" >/dev/null
+  cmake -S . -B "$dir" -G Ninja -DPROX_WARNINGS_AS_ERRORS=ON -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" \
+    -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache "$@" >/dev/null
 }
 
 stage "core only (nothing optional: no tests, samples, benchmarks or glTF)"
@@ -70,7 +81,8 @@ need_packages "${FUZZ_PACKAGES[@]}"
 # clang warns where GCC does not (INFINITY, a float, promoted in the kernel):
 # the fuzz build does not add -Werror; the GCC builds keep it.
 CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_BUILD_FUZZERS=ON \
-  -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_SAMPLES=OFF -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" >/dev/null
+  -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_SAMPLES=OFF -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" \
+  -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/dev/null
 cmake --build build/fuzz -j "$jobs" --target proxima_fuzz_obj proxima_fuzz_poses proxima_fuzz_gltf \
   proxima_fuzz_gltf_capi proxima_fuzz_create_mesh proxima_fuzz_capi
 tests/fuzz/run.sh build/fuzz "$(assets_dir)" "${PROX_FUZZ_SECONDS:-20}"
@@ -105,15 +117,18 @@ scripts/windows.sh
 
 stage "Python bindings (bindings/python): pip install into a fresh venv, then pytest"
 # Pinned PyPI versions: bindings/python/ci-constraints.txt. The contacts are
-# compared with the release build's proxima tool (PROXIMA_CLI).
+# compared with the release build's proxima tool (PROXIMA_CLI). With the
+# release build's warning flags, so that ccache has the library already.
 rm -rf build/py-venv
 python3 -m venv build/py-venv
 PIP_CONSTRAINT="$(pwd)/bindings/python/ci-constraints.txt" CMAKE_BUILD_PARALLEL_LEVEL="$jobs" \
   build/py-venv/bin/pip install --quiet ./bindings/python -r bindings/python/tests/requirements.txt \
-  --config-settings=build-dir="$(pwd)/build/py-wheel"
+  --config-settings=build-dir="$(pwd)/build/py-wheel" --config-settings=cmake.define.PROX_WARNINGS_AS_ERRORS=ON
 echo "-- Python benchmarks smoke run (docs/python.md)"
 build/py-venv/bin/python bindings/python/bench/step_overhead.py "$(assets_dir)/bunny.obj" --iterations 20 >/dev/null
 build/py-venv/bin/python bindings/python/bench/gil.py "$(assets_dir)/bunny.obj" --seconds 0.2 >/dev/null
 PROXIMA_CLI="$(pwd)/build/release/samples/cli/proxima" PROXIMA_ASSETS="$(assets_dir)" \
   build/py-venv/bin/pytest -q bindings/python/tests
+echo "-- ccache: $(ccache --print-stats | awk -F'\t' '$1 == "direct_cache_hit" || $1 == "preprocessed_cache_hit" { h += $2 }
+  $1 == "cache_miss" { m = $2 } END { printf "%d hits, %d misses", h, m }')"
 stage "every stage passed"
