@@ -76,7 +76,7 @@ cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threa
   proxima_hid_capi_tests proxima_openxr_tests proxima_coupling_threads_tests
 ctest --test-dir build/tsan --output-on-failure -L threads
 
-stage "fuzzers (libFuzzer, ASan + UBSan): each target 20 s on corpora from the shared assets (docs/robustness.md)"
+stage "fuzzers (libFuzzer, ASan + UBSan): each target 20 s on corpora from the shared assets, one per core at a time (docs/robustness.md)"
 need_packages "${FUZZ_PACKAGES[@]}"
 # clang warns where GCC does not (INFINITY, a float, promoted in the kernel):
 # the fuzz build does not add -Werror; the GCC builds keep it.
