@@ -118,12 +118,16 @@ scripts/windows.sh
 stage "Python bindings (bindings/python): pip install into a fresh venv, then pytest"
 # Pinned PyPI versions: bindings/python/ci-constraints.txt. The contacts are
 # compared with the release build's proxima tool (PROXIMA_CLI). With the
-# release build's warning flags, so that ccache has the library already.
+# release build's compilers and warning flags (scikit-build-core would take
+# Python's g++ for c++), so that ccache has the library already.
 rm -rf build/py-venv
 python3 -m venv build/py-venv
+release_cache=build/release/CMakeCache.txt
 PIP_CONSTRAINT="$(pwd)/bindings/python/ci-constraints.txt" CMAKE_BUILD_PARALLEL_LEVEL="$jobs" \
   build/py-venv/bin/pip install --quiet ./bindings/python -r bindings/python/tests/requirements.txt \
-  --config-settings=build-dir="$(pwd)/build/py-wheel" --config-settings=cmake.define.PROX_WARNINGS_AS_ERRORS=ON
+  --config-settings=build-dir="$(pwd)/build/py-wheel" --config-settings=cmake.define.PROX_WARNINGS_AS_ERRORS=ON \
+  --config-settings=cmake.define.CMAKE_C_COMPILER="$(sed -n 's/^CMAKE_C_COMPILER:[A-Z]*=//p' "$release_cache")" \
+  --config-settings=cmake.define.CMAKE_CXX_COMPILER="$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$release_cache")"
 echo "-- Python benchmarks smoke run (docs/python.md)"
 build/py-venv/bin/python bindings/python/bench/step_overhead.py "$(assets_dir)/bunny.obj" --iterations 20 >/dev/null
 build/py-venv/bin/python bindings/python/bench/gil.py "$(assets_dir)/bunny.obj" --seconds 0.2 >/dev/null
