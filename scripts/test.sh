@@ -32,7 +32,7 @@ need_packages "${WINDOWS_PACKAGES[@]}"
 # build, the Python wheel); the later two are then cache hits. Every build
 # below goes through it (the consumers and pip inherit the variables). The
 # cache is build/ccache unless CCACHE_DIR says otherwise.
-need_packages ccache
+need_packages "${TEST_PACKAGES[@]}"
 export CCACHE_DIR=${CCACHE_DIR:-$(pwd)/build/ccache}
 export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache
 ccache --zero-stats >/dev/null
