@@ -13,6 +13,10 @@ need_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
+# scripts/test.sh's compiler cache: one run compiles the library with the
+# release flags three times (docs/build.md).
+TEST_PACKAGES=(ccache)
+
 # The compiler, CMake and the libraries the core and its tests need.
 CORE_PACKAGES=(g++ cmake ninja-build libglm-dev libgtest-dev
   libtinygltf-dev nlohmann-json3-dev)  # glTF loading (PROX_WITH_GLTF)

@@ -27,14 +27,34 @@ need_packages "${INSTALL_PACKAGES[@]}"
 # The Windows build (scripts/windows.sh): MinGW-w64, Wine, GoogleTest's sources.
 need_packages "${WINDOWS_PACKAGES[@]}"
 
+# ccache: within one run the library is compiled with the release build's
+# flags three times (the release build, install.subdirectory's vendored
+# build, the Python wheel); the later two are then cache hits. Every build
+# below goes through it (the consumers and pip inherit the variables). The
+# cache is build/ccache unless CCACHE_DIR says otherwise.
+need_packages "${TEST_PACKAGES[@]}"
+export CCACHE_DIR=${CCACHE_DIR:-$(pwd)/build/ccache}
+export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache
+ccache --zero-stats >/dev/null
+
 jobs=$(nproc)
 # Each stage says when it starts, so a slow CI run shows where its time went
 # (the whole run must stay under 30 minutes).
-stage() { echo "== $* [at $((SECONDS / 60)) min $((SECONDS % 60)) s]"; }
+# With the CPU time of everything run so far (bash's times, children's user +
+# system), which a busy machine stretches far less than the wall-clock time.
+stage() {
+  mkdir -p build
+  times >build/times.txt
+  local cpu
+  cpu=$(awk 'END { split($1, u, "m"); split($2, s, "m"); printf "%d", u[1] * 60 + u[2] + s[1] * 60 + s[2] }' \
+    build/times.txt)
+  echo "== $* [at $((SECONDS / 60)) min $((SECONDS % 60)) s, CPU so far $((cpu / 60)) min $((cpu % 60)) s]"
+}
 configure() {  # configure DIR [cmake args...]
   local dir=$1
   shift
-  cmake -S . -B "$dir" -G Ninja -DPROX_WARNINGS_AS_ERRORS=ON -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" "$@" >/dev/null
+  cmake -S . -B "$dir" -G Ninja -DPROX_WARNINGS_AS_ERRORS=ON -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" \
+    -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache "$@" >/dev/null
 }
 
 stage "core only (nothing optional: no tests, samples, benchmarks or glTF)"
@@ -45,25 +65,30 @@ configure build/core -DCMAKE_BUILD_TYPE=Release -DPROX_BUILD_TESTS=OFF -DPROX_BU
 cmake --build build/core -j "$jobs"
 
 stage "address + undefined-behaviour sanitizers"
-configure build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=address,undefined
+# Unity builds of the test programs (PROX_UNITY_TESTS, docs/build.md): about
+# half the compile time under the sanitizers; the release build below
+# compiles each test file on its own.
+configure build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=address,undefined -DPROX_UNITY_TESTS=ON
 cmake --build build/asan -j "$jobs"
 ctest --test-dir build/asan --output-on-failure -j "$jobs"
 
 stage "thread sanitizer (the tests labelled 'threads': handoffs, runtime threads, C API threads and devices)"
-configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=thread -DPROX_BUILD_SAMPLES=OFF
+configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=thread -DPROX_BUILD_SAMPLES=OFF \
+  -DPROX_UNITY_TESTS=ON
 cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests \
   proxima_capi_stream_tests proxima_capi_timing_tests \
-  proxima_hid_capi_tests proxima_openxr_tests proxima_coupling_threads_tests
+  proxima_hid_capi_tests proxima_openxr_tests proxima_coupling_threads_tests proxima_parallel_tests
 ctest --test-dir build/tsan --output-on-failure -L threads
 
-stage "fuzzers (libFuzzer, ASan + UBSan): each target 20 s on corpora from the shared assets (docs/robustness.md)"
+stage "fuzzers (libFuzzer, ASan + UBSan): each target 20 s on corpora from the shared assets, one per core at a time (docs/robustness.md)"
 need_packages "${FUZZ_PACKAGES[@]}"
 # clang warns where GCC does not (INFINITY, a float, promoted in the kernel):
 # the fuzz build does not add -Werror; the GCC builds keep it.
 CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_BUILD_FUZZERS=ON \
-  -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_SAMPLES=OFF -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" >/dev/null
+  -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_SAMPLES=OFF -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" \
+  -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/dev/null
 cmake --build build/fuzz -j "$jobs" --target proxima_fuzz_obj proxima_fuzz_poses proxima_fuzz_gltf \
-  proxima_fuzz_gltf_capi proxima_fuzz_create_mesh proxima_fuzz_capi
+  proxima_fuzz_gltf_capi proxima_fuzz_create_mesh proxima_fuzz_capi proxima_fuzz_hid_descriptor
 tests/fuzz/run.sh build/fuzz "$(assets_dir)" "${PROX_FUZZ_SECONDS:-20}"
 
 stage "release"
@@ -96,15 +121,22 @@ scripts/windows.sh
 
 stage "Python bindings (bindings/python): pip install into a fresh venv, then pytest"
 # Pinned PyPI versions: bindings/python/ci-constraints.txt. The contacts are
-# compared with the release build's proxima tool (PROXIMA_CLI).
+# compared with the release build's proxima tool (PROXIMA_CLI). With the
+# release build's compilers and warning flags (scikit-build-core would take
+# Python's g++ for c++), so that ccache has the library already.
 rm -rf build/py-venv
 python3 -m venv build/py-venv
+release_cache=build/release/CMakeCache.txt
 PIP_CONSTRAINT="$(pwd)/bindings/python/ci-constraints.txt" CMAKE_BUILD_PARALLEL_LEVEL="$jobs" \
   build/py-venv/bin/pip install --quiet ./bindings/python -r bindings/python/tests/requirements.txt \
-  --config-settings=build-dir="$(pwd)/build/py-wheel"
+  --config-settings=build-dir="$(pwd)/build/py-wheel" --config-settings=cmake.define.PROX_WARNINGS_AS_ERRORS=ON \
+  --config-settings=cmake.define.CMAKE_C_COMPILER="$(sed -n 's/^CMAKE_C_COMPILER:[A-Z]*=//p' "$release_cache")" \
+  --config-settings=cmake.define.CMAKE_CXX_COMPILER="$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$release_cache")"
 echo "-- Python benchmarks smoke run (docs/python.md)"
 build/py-venv/bin/python bindings/python/bench/step_overhead.py "$(assets_dir)/bunny.obj" --iterations 20 >/dev/null
 build/py-venv/bin/python bindings/python/bench/gil.py "$(assets_dir)/bunny.obj" --seconds 0.2 >/dev/null
 PROXIMA_CLI="$(pwd)/build/release/samples/cli/proxima" PROXIMA_ASSETS="$(assets_dir)" \
   build/py-venv/bin/pytest -q bindings/python/tests
+echo "-- ccache: $(ccache --print-stats | awk -F'\t' '$1 == "direct_cache_hit" || $1 == "preprocessed_cache_hit" { h += $2 }
+  $1 == "cache_miss" { m = $2 } END { printf "%d hits, %d misses", h, m }')"
 stage "every stage passed"

@@ -8,7 +8,9 @@
 #   consume.sh fetchcontent BUILD SOURCE ASSETS WORK   FetchContent of the source tree (configure only)
 # The deb mode unpacks the packages with dpkg -x into WORK; with
 # PROX_DEB_SYSTEM_INSTALL=1 (CI's throwaway machines) it installs them with
-# apt-get instead, builds against /usr, and removes them again.
+# apt-get instead, builds against /usr, and removes them again. The vendored
+# builds take PROX_WARNINGS_AS_ERRORS, CC, CXX and CMAKE_<LANG>_COMPILER_LAUNCHER
+# from the environment (tests/install/CMakeLists.txt passes the parent build's).
 set -euo pipefail
 mode=$1
 version=${PROX_VERSION:?PROX_VERSION (the project version, major.minor.patch) must be set}
@@ -146,7 +148,8 @@ case $mode in
   subdirectory | fetchcontent)
     cmake -S "$source/tests/install/subdirectory" -B "$work/build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release \
       -DPROXIMA_VIA="$mode" -DPROXIMA_SOURCE_DIR="$source" -DHELLO_SOURCE="$hello_source" \
-      -DPROX_SHARED_ASSETS_DIR="$assets" >"$work/configure.log" 2>&1 || fail "$mode: configure: $(cat "$work/configure.log")"
+      -DPROX_SHARED_ASSETS_DIR="$assets" -DPROX_WARNINGS_AS_ERRORS="${PROX_WARNINGS_AS_ERRORS:-OFF}" \
+      >"$work/configure.log" 2>&1 || fail "$mode: configure: $(cat "$work/configure.log")"
     echo "ok: $mode: configured with Proxima's tests, samples, benchmarks and install rules off"
     if [ "$mode" = subdirectory ]; then
       cmake --build "$work/build" -j 2 >"$work/build.log" 2>&1 || fail "$mode: build: $(tail -30 "$work/build.log")"
