@@ -282,9 +282,10 @@ double Snch::radius_ratio() const {
 void Snch::refit(const Mesh& mesh) {
   const auto start = std::chrono::steady_clock::now();
   // Each vertex's cone of the face normals around it, about its vertex
-  // normal: its half-angle is the vertex's spread, and a leaf's cone is the
-  // merge of its three vertices' (leaf_cone() bounds the same normals, about
-  // their sum). Kept between refits; a refit runs on one thread at a time.
+  // normal: its half-angle is the vertex's spread, and a leaf's cone holds
+  // its three vertices' (refit_leaf_cone(); leaf_cone() bounds the same
+  // normals, about their sum). Kept between refits by the thread; a refit
+  // runs on one thread at a time.
   static thread_local std::vector<CosCone> vertex_cone;
   vertex_cone.resize(mesh.vertex_count());
   vertex_spread_.resize(mesh.vertex_count());
