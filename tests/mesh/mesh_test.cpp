@@ -20,7 +20,7 @@
 namespace prox {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kHalfTurn = 3.14159265358979323846;  // pi (snch/cone.h has its own kPi)
 
 struct Soup {
   std::vector<double> positions;
@@ -526,7 +526,7 @@ TEST(Mesh, TetrahedronAdjacencyAndNormals) {
   expect_vec(m.vertex_normal(0), Vec3(-1.0) / std::sqrt(3.0));
   // Vertex 1: 45 degrees on the -z and -y faces, 60 on the equilateral one.
   const Vec3 sum =
-      kPi / 4 * Vec3(0, 0, -1) + kPi / 4 * Vec3(0, -1, 0) + kPi / 3 * Vec3(1, 1, 1) / std::sqrt(3.0);
+      kHalfTurn / 4 * Vec3(0, 0, -1) + kHalfTurn / 4 * Vec3(0, -1, 0) + kHalfTurn / 3 * Vec3(1, 1, 1) / std::sqrt(3.0);
   expect_vec(m.vertex_normal(1), glm::normalize(sum));
   // Edge 1-2 joins the -z face and the slanted one.
   expect_vec(m.edge_normal(3, 0), glm::normalize(Vec3(0, 0, -1) + Vec3(1, 1, 1) / std::sqrt(3.0)));
@@ -539,7 +539,7 @@ TEST(Mesh, LargeTriangleSoupWeldsInLinearTime) {
   std::vector<Vec3> grid(std::size_t{n} * n);
   for (std::uint32_t i = 0; i < n; ++i)
     for (std::uint32_t j = 0; j < n; ++j) {
-      const double u = 2 * kPi * i / n, w = 2 * kPi * j / n;
+      const double u = 2 * kHalfTurn * i / n, w = 2 * kHalfTurn * j / n;
       grid[std::size_t{i} * n + j] = Vec3((2 + 0.5 * std::cos(w)) * std::cos(u),
                                           (2 + 0.5 * std::cos(w)) * std::sin(u), 0.5 * std::sin(w));
     }
