@@ -68,12 +68,19 @@ stage "address + undefined-behaviour sanitizers"
 # Unity builds of the test programs (PROX_UNITY_TESTS, docs/build.md): about
 # half the compile time under the sanitizers; the release build below
 # compiles each test file on its own.
-configure build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=address,undefined -DPROX_UNITY_TESTS=ON
+# The sanitizer builds (here, ThreadSanitizer's and the fuzzers') keep -O2
+# but carry line tables only (-g1): their reports still name each frame's
+# function, file and line, and the compile takes about a quarter less time
+# (gltf.cpp under ASan: 68 s of CPU with -g, 49 s with -g1).
+sanitizer_flags=(-DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG")
+configure build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo "${sanitizer_flags[@]}" -DPROX_SANITIZE=address,undefined \
+  -DPROX_UNITY_TESTS=ON
 cmake --build build/asan -j "$jobs"
 ctest --test-dir build/asan --output-on-failure -j "$jobs"
 
 stage "thread sanitizer (the tests labelled 'threads': handoffs, runtime threads, C API threads and devices)"
-configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_SANITIZE=thread -DPROX_BUILD_SAMPLES=OFF \
+configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo "${sanitizer_flags[@]}" -DPROX_SANITIZE=thread \
+  -DPROX_BUILD_SAMPLES=OFF \
   -DPROX_UNITY_TESTS=ON
 cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests \
   proxima_capi_stream_tests proxima_capi_timing_tests \
@@ -84,7 +91,8 @@ stage "fuzzers (libFuzzer, ASan + UBSan): each target 20 s on corpora from the s
 need_packages "${FUZZ_PACKAGES[@]}"
 # clang warns where GCC does not (INFINITY, a float, promoted in the kernel):
 # the fuzz build does not add -Werror; the GCC builds keep it.
-CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPROX_BUILD_FUZZERS=ON \
+CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${sanitizer_flags[@]}" \
+  -DPROX_BUILD_FUZZERS=ON \
   -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_SAMPLES=OFF -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" \
   -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/dev/null
 cmake --build build/fuzz -j "$jobs" --target proxima_fuzz_obj proxima_fuzz_poses proxima_fuzz_gltf \
