@@ -330,7 +330,7 @@ ChurnRow churn(const std::string& bunny_path, double seconds, double rate) {
     const Pose held{glm::dmat3(1.0), Vec3(width + 0.001, 0.0, 0.0)};
     const runtime::Handle tool = world.create_body(mesh, runtime::BodyType::Tool, held, Vec3(0.0));
     runtime::ScriptedDevice device({runtime::ScriptedPose::of(held)}, 1.0, false);
-    world.set_device(tool, device.device());
+    world.set_device(tool, runtime::Device::borrowed(device));
     runtime::ThreadSettings settings;
     if (!world.start_threads(settings, status)) throw std::runtime_error(status.message());
     const auto start = Clock::now();

@@ -180,7 +180,7 @@ void run_threads(const Model& model, const Options& opt) {
   for (const PosePoint& p : path) poses.push_back(runtime::ScriptedPose::of(p.pose));
   constexpr double kSecondsPerPose = 0.003, kHold = 0.5;
   runtime::ScriptedDevice device(poses, kSecondsPerPose, false);
-  world.set_device(tool, device.device());
+  world.set_device(tool, runtime::Device::borrowed(device));
   const runtime::ThreadSettings settings;
   if (!world.start_threads(settings, status)) throw UserError(status.message());
   std::this_thread::sleep_for(

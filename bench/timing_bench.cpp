@@ -93,7 +93,7 @@ class Bench {
     else
       path = {runtime::ScriptedPose::of(at(far_))};
     runtime::ScriptedDevice device(path, 0.2, true);
-    world.set_device(tool, device.device());
+    world.set_device(tool, runtime::Device::borrowed(device));
     runtime::ThreadSettings s;
     s.haptic_timing = c.timing;
     s.realtime_priority[0] = c.priority;

@@ -32,19 +32,11 @@ LAYERS = {
     "coupling": {"common", "geometry", "mesh", "snch", "contact"},
     "runtime": {"common", "geometry", "mesh", "io", "snch", "contact", "coupling"},
     "devices": {"common", "geometry", "runtime"},
-    "xr": {"common", "geometry", "runtime", "devices"},
-    "capi": {"common", "geometry", "mesh", "io", "snch", "contact", "coupling", "runtime", "devices", "xr"},
+    "capi": {"common", "geometry", "mesh", "io", "snch", "contact", "coupling", "runtime", "devices"},
 }
 
-# Known breaks being mended (issue: one shape for the SDK): the OpenXR device
-# is a C API wrapper over the public streamed-device API, not yet a device of
-# the runtime's under sdk/src/devices.
+# Known breaks being mended (issue: one shape for the SDK).
 KNOWN = {
-    ("sdk/src/xr/xr_capi.cpp", "capi/common.h"): "the XR device still reports errors through the C API's",
-    ("sdk/src/xr/xr_capi.cpp", "proxima/proxima_openxr.h"): "the XR device is still written over the public API",
-    ("sdk/src/xr/xr_device.h", "proxima/proxima_openxr.h"): "the XR device is still written over the public API",
-    ("sdk/src/xr/xr_actions.cpp", "capi/common.h"): "the XR device still reports errors through the C API's",
-    ("sdk/src/xr/xr_actions.cpp", "proxima/proxima_openxr.h"): "the XR device is still written over the public API",
     ("bench/CMakeLists.txt", "tests/coupling/scenes.cpp"): "the constrained tool's scenes are still the tests'",
     ("bench/CMakeLists.txt", "tests"): "the constrained tool's scenes are still the tests'",
 }

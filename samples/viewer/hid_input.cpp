@@ -24,7 +24,7 @@ bool hid_present() {
   return (r == PROX_SUCCESS || r == PROX_ERROR_CAPACITY) && count > 0;
 }
 
-uint32_t attach_hid(proxWorldId world, proxBodyId tool, const proxPose& start, const proxVec3& reference) {
+uint64_t attach_hid(proxWorldId world, proxBodyId tool, const proxPose& start, const proxVec3& reference) {
   proxHidDeviceDef def = proxDefaultHidDeviceDef();
   def.initialPose = start;
   def.referencePoint = reference;
@@ -33,12 +33,12 @@ uint32_t attach_hid(proxWorldId world, proxBodyId tool, const proxPose& start, c
   proxDeviceDef device;
   check(proxHidDevice_GetDeviceDef(id, &device));
   check(proxBody_SetDevice(tool, &device));
-  return id.index1;
+  return (uint64_t(id.reserved) << 32) | id.index1;
 }
 
-std::string hid_summary(proxWorldId world, uint32_t device) {
+std::string hid_summary(proxWorldId world, uint64_t device) {
   if (device == 0) return "";
-  const proxHidDeviceId id{device, 0, world};
+  const proxHidDeviceId id{uint32_t(device), uint32_t(device >> 32), world};
   proxHidDeviceStats s;
   proxPose p;
   if (proxHidDevice_GetStats(id, &s) != PROX_SUCCESS || proxHidDevice_GetPose(id, &p) != PROX_SUCCESS)
@@ -56,10 +56,10 @@ std::string hid_summary(proxWorldId world, uint32_t device) {
 #else
 bool hid_supported() { return false; }
 bool hid_present() { return false; }
-uint32_t attach_hid(proxWorldId, proxBodyId, const proxPose&, const proxVec3&) {
+uint64_t attach_hid(proxWorldId, proxBodyId, const proxPose&, const proxVec3&) {
   throw std::runtime_error("--device hid: this libproxima was built without HID devices (PROX_WITH_HIDAPI)");
 }
-std::string hid_summary(proxWorldId, uint32_t) { return ""; }
+std::string hid_summary(proxWorldId, uint64_t) { return ""; }
 #endif
 
 }  // namespace viewer

@@ -16,11 +16,12 @@ bool hid_present();
 
 // Opens the first supported HID device and lets it hold `tool`, which starts
 // at `start` and turns about `reference` (its frame). Returns the device's
-// index + 1 (0: none); throws std::runtime_error with the library's message.
-uint32_t attach_hid(proxWorldId world, proxBodyId tool, const proxPose& start, const proxVec3& reference);
+// id as one integer (0: none); throws std::runtime_error with the library's
+// message.
+uint64_t attach_hid(proxWorldId world, proxBodyId tool, const proxPose& start, const proxVec3& reference);
 
 // A line about the device: its profile, reports read, outputs written and the
 // pose it holds the tool at; empty when `device` is 0.
-std::string hid_summary(proxWorldId world, uint32_t device);
+std::string hid_summary(proxWorldId world, uint64_t device);
 
 }  // namespace viewer

@@ -118,7 +118,7 @@ class Scene {
   proxMeshId mesh_a_{}, mesh_b_{};
   bool threads_ = false;
   proxStreamDeviceId stream_{};  // the mouse or gamepad device
-  uint32_t hid_ = 0;             // the HID device (hid_input.h), index + 1
+  uint64_t hid_ = 0;             // the HID device (hid_input.h), as one integer
   double cutoff_ = 0.0;
   proxForceSettings force_{};
   glm::dvec3 reference_local_{0.0};

@@ -300,7 +300,10 @@ TEST_F(Stream, ADeviceHoldsOnlyItsOwnWorldsTools) {
 // A def whose callbacks are one built-in device's and whose pointer is
 // another's, both of this world, is refused: the haptic loop would read the
 // one device as the other.
-TEST_F(Stream, ABuiltInDevicesCallbacksTakeOnlyThatKindOfDevice) {
+// Every device of Proxima's reads through the same two callbacks (the
+// device table's), so a def is taken for a device of Proxima's only when its
+// userData is a live one: never a pointer of the application's.
+TEST_F(Stream, TheTablesCallbacksTakeOnlyALiveDevice) {
   create(PROX_STREAM_HOLD);
   const proxPose poses[2] = {at(kFar), at(kNear)};
   proxScriptedDeviceDef scd = proxDefaultScriptedDeviceDef();
@@ -311,15 +314,50 @@ TEST_F(Stream, ABuiltInDevicesCallbacksTakeOnlyThatKindOfDevice) {
   proxDeviceDef streamed{}, script{};
   ASSERT_OK(proxStreamDevice_GetDeviceDef(device, &streamed));
   ASSERT_OK(proxScriptedDevice_GetDeviceDef(scripted, &script));
-  proxDeviceDef mixed = streamed;
-  mixed.userData = script.userData;
-  EXPECT_FAILS(proxBody_SetDevice(tool, &mixed), PROX_ERROR_INVALID_ARGUMENT, "built-in device");
-  mixed = script;
-  mixed.userData = streamed.userData;
-  EXPECT_FAILS(proxBody_SetDevice(tool, &mixed), PROX_ERROR_INVALID_ARGUMENT, "built-in device");
+  EXPECT_EQ(streamed.readPose, script.readPose);
+  EXPECT_EQ(streamed.writeWrench, script.writeWrench);
+  int not_a_device = 0;
+  proxDeviceDef forged = streamed;
+  forged.userData = &not_a_device;
+  EXPECT_FAILS(proxBody_SetDevice(tool, &forged), PROX_ERROR_INVALID_ARGUMENT, "does not exist");
   // Each as it came holds the tool.
   EXPECT_OK(proxBody_SetDevice(tool, &script));
   EXPECT_OK(proxBody_SetDevice(tool, &streamed));
+  // A destroyed one's def is refused by its kind's name, and its id everywhere.
+  EXPECT_OK(proxScriptedDevice_Destroy(scripted));
+  EXPECT_FAILS(proxBody_SetDevice(tool, &script), PROX_ERROR_INVALID_ARGUMENT, "scripted device that was destroyed");
+  proxScriptedDeviceRecord record;
+  EXPECT_FAILS(proxScriptedDevice_GetRecord(scripted, &record), PROX_ERROR_INVALID_HANDLE, "destroyed");
+  EXPECT_FAILS(proxScriptedDevice_Destroy(scripted), PROX_ERROR_INVALID_HANDLE, "scripted device");
+  EXPECT_FALSE(proxScriptedDevice_IsValid(scripted));
+  EXPECT_TRUE(proxStreamDevice_IsValid(device));
+}
+
+// A slot freed by Destroy is taken by the next device; the old id, whose
+// generation is gone, never names the new one.
+TEST_F(Stream, AStaleIdNeverNamesTheDeviceNowInItsSlot) {
+  create(PROX_STREAM_HOLD);
+  const proxStreamDeviceId old = device;
+  ASSERT_OK(proxStreamDevice_Destroy(old));
+  proxStreamDeviceDef def = proxDefaultStreamDeviceDef();
+  proxStreamDeviceId now{};
+  ASSERT_OK(proxWorld_CreateStreamDevice(world, &def, &now));
+  EXPECT_EQ(now.index1, old.index1);      // the same slot ...
+  EXPECT_NE(now.reserved, old.reserved);  // ... in another generation
+  const proxPose pose = at(kFar);
+  EXPECT_FAILS(proxStreamDevice_PushPose(old, &pose, proxGetTime()), PROX_ERROR_INVALID_HANDLE, "destroyed");
+  EXPECT_FALSE(proxStreamDevice_IsValid(old));
+  EXPECT_OK(proxStreamDevice_PushPose(now, &pose, proxGetTime()));
+  // A device of another kind in a streamed device's id is not taken for one.
+  proxScriptedDeviceDef scd = proxDefaultScriptedDeviceDef();
+  scd.poses = &pose;
+  scd.poseCount = 1;
+  proxScriptedDeviceId scripted{};
+  ASSERT_OK(proxWorld_CreateScriptedDevice(world, &scd, &scripted));
+  const proxStreamDeviceId disguised{scripted.index1, scripted.reserved, world};
+  EXPECT_FAILS(proxStreamDevice_PushPose(disguised, &pose, proxGetTime()), PROX_ERROR_INVALID_HANDLE,
+               "streamed device");
+  device = now;
 }
 
 TEST_F(Stream, ThreadRulesAndTheWorldsEnd) {

@@ -5,6 +5,7 @@
 #include "coupling/scenes.h"
 
 #include "coupling/clearance.h"
+#include "runtime/scripted_device.h"
 #include "runtime/threads.h"
 #include "support/marked_threads.h"
 
@@ -14,6 +15,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
+#include <memory>
 #include <new>
 #include <thread>
 
@@ -23,17 +25,14 @@ namespace {
 using namespace coupling_scenes;
 
 // The scripted device, marking the thread that reads it (the haptic one).
-struct MarkingDevice {
-  runtime::Device inner;
-  static bool read(void* user, runtime::DevicePose* pose) {
+struct MarkingDevice final : runtime::HapticDevice {
+  explicit MarkingDevice(std::shared_ptr<runtime::HapticDevice> device) : inner(std::move(device)) {}
+  bool read_pose(runtime::DevicePose* pose) override {
     prox::testing::mark_this_thread(true);
-    auto* self = static_cast<MarkingDevice*>(user);
-    return self->inner.read_pose(self->inner.user, pose);
+    return inner->read_pose(pose);
   }
-  static void write(void* user, const runtime::DeviceWrench* w) {
-    auto* self = static_cast<MarkingDevice*>(user);
-    self->inner.write_wrench(self->inner.user, w);
-  }
+  void write_wrench(const runtime::DeviceWrench& w) override { inner->write_wrench(w); }
+  std::shared_ptr<runtime::HapticDevice> inner;
 };
 
 TEST(ConstrainedToolThreads, BunnyThroughAndBackStaysOutside) {
@@ -51,10 +50,8 @@ TEST(ConstrainedToolThreads, BunnyThroughAndBackStaysOutside) {
   std::vector<runtime::ScriptedPose> poses;
   for (const Vec3& p : {near, far, near}) poses.push_back({{p.x, p.y, p.z}, {1.0, 0.0, 0.0, 0.0}});
   const double seconds_per_pose = glm::length(far - near) / 0.5;
-  auto* scripted = w.scripted_device(
-      w.add_scripted_device(std::make_unique<runtime::ScriptedDevice>(poses, seconds_per_pose, false)));
-  MarkingDevice marking{scripted->device()};
-  w.set_device(b.tool, {&MarkingDevice::read, &MarkingDevice::write, &marking, nullptr});
+  auto scripted = std::make_shared<runtime::ScriptedDevice>(poses, seconds_per_pose, false);
+  w.set_device(b.tool, runtime::Device{std::make_shared<MarkingDevice>(scripted)});
 
   runtime::ThreadSettings settings;
   Status status;

@@ -296,8 +296,8 @@ TEST(XrDevice, DestroyWhileRunning) {
   EXPECT_EQ(validation_errors(app), "");
 }
 
-// The world goes first (its threads stop, its streamed device with it): the
-// XR device keeps running harmlessly until destroyed.
+// The world goes first: its XR device goes with it (its thread stopped, its
+// action space destroyed), so the app may end the session right after.
 TEST(XrDevice, WorldDestroyedFirst) {
   XrApp app;
   proxXrDeviceId device{};
@@ -308,10 +308,15 @@ TEST(XrDevice, WorldDestroyedFirst) {
     device = scene.start(app, scene.def(app));
     ASSERT_TRUE(app.pump_until([&] { return scene.force() > 0.0; }));
   }
-  const uint64_t pushed = stats_of(device).posesPushed;
+  EXPECT_FALSE(proxXrDevice_IsValid(device));
+  app.set_device({});  // the app forwards frames to it no more
+  proxXrDeviceStats s;
+  EXPECT_EQ(proxXrDevice_GetStats(device, &s), PROX_ERROR_INVALID_HANDLE);
+  EXPECT_EQ(proxXrDevice_Destroy(device), PROX_ERROR_INVALID_HANDLE);
+  const uint64_t locates = mock_control().locateCalls();
   app.pump_for(0.2);
-  EXPECT_EQ(stats_of(device).posesPushed, pushed) << "poses pushed into a destroyed world";
-  prox_check(proxXrDevice_Destroy(device), "proxXrDevice_Destroy");
+  EXPECT_EQ(mock_control().locateCalls(), locates) << "located after its world was destroyed";
+  app.exit_session();
   app.destroy();
   EXPECT_EQ(validation_errors(app), "");
 }

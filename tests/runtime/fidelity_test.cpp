@@ -35,19 +35,16 @@ bool wait_for(const std::function<bool()>& done, double seconds = 60.0) {
 
 // A device moving the tool along x by the haptic thread's own tick count:
 // `x0` and then `speed` m per tick (a hand at speed * 1000 m/s at 1 kHz).
-struct SlidingDevice {
+struct SlidingDevice final : HapticDevice {
   std::atomic<double> x0{0.0};
   std::atomic<double> per_tick{0.0};
   std::atomic<long> reads{0};
-  static bool read(void* user, DevicePose* pose) {
+  bool read_pose(DevicePose* pose) override {
     prox::testing::mark_this_thread(true);
-    auto* self = static_cast<SlidingDevice*>(user);
-    const long n = self->reads.fetch_add(1);
-    *pose = {{self->x0.load() + self->per_tick.load() * double(n), 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}};
+    const long n = reads.fetch_add(1);
+    *pose = {{x0.load() + per_tick.load() * double(n), 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}};
     return true;
   }
-  static void write(void*, const DeviceWrench*) {}
-  Device device() { return {&read, &write, this, nullptr}; }
 };
 
 class Fidelity : public ::testing::Test {
@@ -71,7 +68,7 @@ class Fidelity : public ::testing::Test {
     ToolSettings tool;
     tool.mode = mode;
     tool_ = world_->create_body(mesh, BodyType::Tool, at, Vec3(0.05), tool);
-    world_->set_device(tool_, device_.device());
+    world_->set_device(tool_, Device::borrowed(device_));
   }
   void start(ThreadSettings settings = {}) {
     settings.trace_capacity = 1 << 16;

@@ -239,14 +239,14 @@ TEST(ScriptedDevice, InterpolatesAndHolds) {
 
 TEST(ScriptedDevice, RecordsWhatItIsHanded) {
   ScriptedDevice device({ScriptedPose{}}, 1.0, false);
-  const Device d = device.device();
+  HapticDevice& d = device;  // as the haptic loop holds it
   DevicePose pose{};
-  ASSERT_TRUE(d.read_pose(d.user, &pose));
+  ASSERT_TRUE(d.read_pose(&pose));
   EXPECT_EQ(pose.rotation[0], 1.0);
   const DeviceWrench w1{{1.0, 0.0, 0.0}, {0.0, 0.0, 0.1}, false, kNoContact, 0.0, 0.0};
   const DeviceWrench w2{{1.0, 0.5, 0.0}, {0.0, 0.0, 0.0}, false, kNoContact, 0.0, 0.0};
-  d.write_wrench(d.user, &w1);
-  d.write_wrench(d.user, &w2);
+  d.write_wrench(w1);
+  d.write_wrench(w2);
   const ScriptedRecord r = device.record();
   EXPECT_EQ(r.reads, 1u);
   EXPECT_EQ(r.writes, 2u);

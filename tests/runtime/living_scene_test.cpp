@@ -252,7 +252,7 @@ TEST_F(LivingScene, ToolsComeAndGoWithTheirDevicesFadedInAndOut) {
   ScriptedDevice held({ScriptedPose::of(near_)}, 1.0, false);
   FaultyDevice second(held);
   const Handle tool = world_->create_body(wall_mesh_, BodyType::Tool, far_, bunny_->centre);
-  world_->set_device(tool, second.device());
+  world_->set_device(tool, Device::borrowed(second));
   EXPECT_TRUE(wait_until([&] {
     return length(world_->wrench(tool).force - expected_wrench_.force) <= 1e-9 * length(expected_wrench_.force);
   })) << "the new tool never reached the held tool's force";
@@ -264,7 +264,7 @@ TEST_F(LivingScene, ToolsComeAndGoWithTheirDevicesFadedInAndOut) {
   // Its device swapped for a third, held at the same pose.
   ScriptedDevice third_device({ScriptedPose::of(near_)}, 1.0, false);
   FaultyDevice third(third_device);
-  world_->set_device(tool, third.device());
+  world_->set_device(tool, Device::borrowed(third));
   const ScriptedRecord swapped = held.record();
   EXPECT_EQ(length(swapped.last_force), 0.0);
   EXPECT_TRUE(wait_until([&] {

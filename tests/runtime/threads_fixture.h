@@ -30,18 +30,16 @@ using Clock = std::chrono::steady_clock;
 
 // The scripted device with faults to inject, as a misbehaving real device
 // would produce them.
-struct FaultyDevice {
+struct FaultyDevice final : HapticDevice {
   enum Fault { None = 0, NaNPose = 1, NoPose = 2, Teleport = 3 };
-  explicit FaultyDevice(ScriptedDevice& scripted) : inner(scripted.device()) {}
-  explicit FaultyDevice(const Device& device) : inner(device) {}
+  explicit FaultyDevice(HapticDevice& device) : inner(device) {}
 
-  Device device() { return {&FaultyDevice::read, &FaultyDevice::write, this, nullptr}; }
+  Device device() { return Device::borrowed(*this); }
 
-  static bool read(void* user, DevicePose* pose) {
+  bool read_pose(DevicePose* pose) override {
     prox::testing::mark_this_thread(true);
-    auto* self = static_cast<FaultyDevice*>(user);
-    const bool ok = self->inner.read_pose(self->inner.user, pose);
-    switch (self->fault.load()) {
+    const bool ok = inner.read_pose(pose);
+    switch (fault.load()) {
       case NaNPose:
         pose->position[1] = std::numeric_limits<double>::quiet_NaN();
         break;
@@ -55,15 +53,14 @@ struct FaultyDevice {
     }
     return ok;
   }
-  static void write(void* user, const DeviceWrench* w) {
-    auto* self = static_cast<FaultyDevice*>(user);
-    self->inner.write_wrench(self->inner.user, w);
-    self->closest.store(w->closest_distance, std::memory_order_relaxed);
-    self->safety_distance.store(w->safety_distance, std::memory_order_relaxed);
-    self->cutoff.store(w->cutoff, std::memory_order_relaxed);
+  void write_wrench(const DeviceWrench& w) override {
+    inner.write_wrench(w);
+    closest.store(w.closest_distance, std::memory_order_relaxed);
+    safety_distance.store(w.safety_distance, std::memory_order_relaxed);
+    cutoff.store(w.cutoff, std::memory_order_relaxed);
   }
 
-  Device inner;
+  HapticDevice& inner;
   std::atomic<int> fault{None};
   // What the last wrench said of the distances.
   std::atomic<double> closest{-1.0}, safety_distance{-1.0}, cutoff{-1.0};

@@ -69,7 +69,7 @@ TEST_F(ThreadsTest, StoppingASlowLoopWaitsNeitherForItsPeriodNorForASlowFade) {
   const double force = length(expected_wrench_.force);
   settings_.max_force_rate = force / (4 * 0.005);
   scripted_ = std::make_unique<ScriptedDevice>(std::vector<ScriptedPose>{ScriptedPose::of(near_)}, 1.0, false);
-  world_->set_device(tool_, scripted_->device());
+  world_->set_device(tool_, Device::borrowed(*scripted_));
   Status status;
   ASSERT_TRUE(world_->start_threads(settings_, status)) << status.message();
   // Seen within milliseconds of the tick that wrote it: the haptic thread is
@@ -253,8 +253,8 @@ TEST_F(ThreadsTest, StreamedDeviceDrivesTheToolWithoutAllocating) {
   StreamSettings stream_settings;
   stream_settings.mode = StreamMode::Interpolate;
   StreamDevice stream(stream_settings);
-  FaultyDevice marked(stream.device());
-  world_->set_device(tool_, marked.device());
+  FaultyDevice marked(stream);
+  world_->set_device(tool_, Device::borrowed(marked));
   const ScriptedDevice path({ScriptedPose::of(far_), ScriptedPose::of(near_)}, 0.5, false);
   std::atomic<bool> stop{false};
   std::thread engine([&] {

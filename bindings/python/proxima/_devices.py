@@ -14,7 +14,7 @@ def get_time():
 
 class ScriptedDevice:
     """A tool moved along a path of poses (proxScriptedDeviceId); attach it
-    with Body.set_device. It lives as long as its world."""
+    with Body.set_device. It lives until destroy() or its world's end."""
 
     def __init__(self, world, idp):
         self.world = world
@@ -26,6 +26,16 @@ class ScriptedDevice:
         out = ffi.new("proxScriptedDeviceRecord*")
         check(lib.proxScriptedDevice_GetRecord(self._idp[0], out))
         return from_c(ScriptedDeviceRecord, out[0])
+
+    def destroy(self):
+        """Lets the device go: a tool it holds has no pose from then on (its
+        force fades out)."""
+        check(lib.proxScriptedDevice_Destroy(self._idp[0]))
+
+    @property
+    def valid(self):
+        """Whether the device is alive (not destroyed, nor its world)."""
+        return bool(lib.proxScriptedDevice_IsValid(self._idp[0]))
 
     def _device_def(self):
         out = ffi.new("proxDeviceDef*")
@@ -40,8 +50,8 @@ class StreamDevice:
     """The device for a tool your code moves (proxStreamDeviceId): push
     timestamped poses from one thread at your own rate, the haptic loop
     renders the pose at its 1 kHz from the latest samples (in C: no Python
-    runs on the haptic thread). Attach it with Body.set_device; it lives as
-    long as its world."""
+    runs on the haptic thread). Attach it with Body.set_device; it lives
+    until destroy() or its world's end."""
 
     def __init__(self, world, idp):
         self.world = world
@@ -72,6 +82,17 @@ class StreamDevice:
         out = ffi.new("proxStreamDeviceStats*")
         check(lib.proxStreamDevice_GetStats(self._idp[0], out))
         return from_c(StreamDeviceStats, out[0])
+
+    def destroy(self):
+        """Lets the device go: a tool it holds has no pose from then on (its
+        force fades out); push_pose raises from then on."""
+        check(lib.proxStreamDevice_Destroy(self._idp[0]))
+
+    @property
+    def valid(self):
+        """Whether the device is alive (not destroyed, nor its world). Any
+        thread."""
+        return bool(lib.proxStreamDevice_IsValid(self._idp[0]))
 
     def _device_def(self):
         out = ffi.new("proxDeviceDef*")

@@ -106,3 +106,44 @@ def test_stream_misuse(world, bunny):
         foreign.wrench()
     with pytest.raises(proxima.InvalidHandle):
         foreign.stats
+
+
+def test_a_destroyed_device_lets_its_tool_fade_and_its_id_goes(world, bunny):
+    world.create_body(bunny, "static")
+    tool = world.create_body(bunny, "tool", pose=((0.1592, 0, 0), (1, 0, 0, 0)), reference_point=box_centre(bunny))
+    hand = world.create_stream_device(mode="hold")
+    tool.set_device(hand)
+    world.start_threads()
+    stop = threading.Event()
+
+    def push():
+        while not stop.is_set():
+            try:
+                hand.push_pose((0.1392, 0, 0), (1, 0, 0, 0))
+            except proxima.InvalidHandle:
+                return  # destroyed under this thread: the push is refused by name
+            time.sleep(0.005)
+
+    pusher = threading.Thread(target=push)
+    pusher.start()
+    try:
+        assert _wait_for(lambda: np.linalg.norm(tool.wrench()[0]) > 0.01), "no force in contact"
+        assert hand.valid
+        hand.destroy()
+        assert not hand.valid
+        # The tool has no pose from then on: its force fades to exactly zero.
+        assert _wait_for(lambda: np.linalg.norm(tool.wrench()[0]) == 0.0), "the force did not fade"
+    finally:
+        stop.set()
+        pusher.join()
+        world.stop_threads()
+    with pytest.raises(proxima.InvalidHandle, match="destroyed"):
+        hand.push_pose((0, 0, 0), (1, 0, 0, 0))
+    with pytest.raises(proxima.InvalidHandle):
+        hand.destroy()
+    scripted = world.create_scripted_device([((0.2, 0, 0), (1, 0, 0, 0))], 0.1)
+    assert scripted.valid
+    scripted.destroy()
+    assert not scripted.valid
+    with pytest.raises(proxima.InvalidHandle, match="scripted device"):
+        scripted.record

@@ -42,11 +42,20 @@ PROX_API proxDeviceDef proxDefaultDeviceDef(void);
  * come (docs/dynamic-scenes.md). */
 PROX_API proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def);
 
-/* The built-in scripted device: a tool moved along a path of poses, for
- * tests, demos and replays. It lives as long as its world. */
+/* Every device of Proxima's (scripted, streamed, HID, XR) is made by its
+ * world, lives until its Destroy or its world's destruction, and is let go
+ * of the same way: Destroy closes it (stops its thread, if it has one), so
+ * a tool that holds it has no pose from then on and its force fades out,
+ * until the tool is given another device or NULL; its id is then invalid
+ * everywhere. Its ids carry a generation (the field `reserved`):
+ * copy them whole, never make one by hand. At most 4096 devices of every
+ * kind together exist at once in the process (PROX_ERROR_CAPACITY beyond).
+ *
+ * The built-in scripted device: a tool moved along a path of poses, for
+ * tests, demos and replays. */
 typedef struct proxScriptedDeviceId {
-  uint32_t index1;
-  uint32_t reserved;
+  uint32_t index1;   /* index + 1; 0 is null */
+  uint32_t reserved; /* the slot's generation */
   proxWorldId world;
 } proxScriptedDeviceId;
 
@@ -85,6 +94,11 @@ typedef struct proxScriptedDeviceRecord {
 /* Game thread. */
 PROX_API proxResult proxScriptedDevice_GetRecord(proxScriptedDeviceId device,
                                                  proxScriptedDeviceRecord* record);
+/* Lets the device go (see above). Game thread. */
+PROX_API proxResult proxScriptedDevice_Destroy(proxScriptedDeviceId device);
+/* Whether the id names a live scripted device (proxGetLastError says why
+ * not). Any thread. */
+PROX_API proxBool proxScriptedDevice_IsValid(proxScriptedDeviceId device);
 
 /* ---- the streamed device ----------------------------------------------------------
  * The device for engines, bindings and XR (docs/devices.md): the application
@@ -93,11 +107,10 @@ PROX_API proxResult proxScriptedDevice_GetRecord(proxScriptedDeviceId device,
  * latest samples, and the wrench it renders is read back from any thread
  * (for a rumble or an XR vibration the application drives itself). Pushing
  * and reading never lock, allocate or wait, and the haptic loop never waits
- * on the pusher. A streamed device lives as long as its world; attach it to
- * one tool with proxBody_SetDevice. */
+ * on the pusher. Attach it to one tool with proxBody_SetDevice. */
 typedef struct proxStreamDeviceId {
-  uint32_t index1; /* index + 1; 0 is null */
-  uint32_t reserved;
+  uint32_t index1;   /* index + 1; 0 is null */
+  uint32_t reserved; /* the slot's generation */
   proxWorldId world;
 } proxStreamDeviceId;
 
@@ -139,8 +152,7 @@ typedef struct proxStreamDeviceStats {
 PROX_API double proxGetTime(void);
 
 PROX_API proxStreamDeviceDef proxDefaultStreamDeviceDef(void);
-/* Game thread. At most 1024 streamed devices exist at once in the process
- * (PROX_ERROR_CAPACITY beyond). */
+/* Game thread. */
 PROX_API proxResult proxWorld_CreateStreamDevice(proxWorldId world, const proxStreamDeviceDef* def,
                                                  proxStreamDeviceId* device);
 /* Hands the device the tool's world pose at `timeSeconds` (on proxGetTime's
@@ -150,8 +162,8 @@ PROX_API proxResult proxWorld_CreateStreamDevice(proxWorldId world, const proxSt
  * is dropped (counted, not an error); a non-finite pose, a zero quaternion,
  * or a NaN, infinite or negative time is refused with
  * PROX_ERROR_INVALID_ARGUMENT and never reaches the haptic loop. Other
- * quaternions are normalised. PROX_ERROR_INVALID_HANDLE once the world is
- * destroyed. */
+ * quaternions are normalised. PROX_ERROR_INVALID_HANDLE once the device or
+ * its world is destroyed. */
 PROX_API proxResult proxStreamDevice_PushPose(proxStreamDeviceId device, const proxPose* pose,
                                               double timeSeconds);
 /* The wrench the haptic loop last handed the device (zero before the
@@ -161,6 +173,12 @@ PROX_API proxResult proxStreamDevice_GetWrench(proxStreamDeviceId device, proxWr
 PROX_API proxResult proxStreamDevice_GetDeviceDef(proxStreamDeviceId device, proxDeviceDef* def);
 /* Game thread. */
 PROX_API proxResult proxStreamDevice_GetStats(proxStreamDeviceId device, proxStreamDeviceStats* stats);
+/* Lets the device go (see proxScriptedDeviceId); a push under way on
+ * another thread finishes first, later ones get PROX_ERROR_INVALID_HANDLE.
+ * Game thread. */
+PROX_API proxResult proxStreamDevice_Destroy(proxStreamDeviceId device);
+/* Whether the id names a live streamed device. Any thread. */
+PROX_API proxBool proxStreamDevice_IsValid(proxStreamDeviceId device);
 
 #ifdef __cplusplus
 }

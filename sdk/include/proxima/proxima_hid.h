@@ -45,8 +45,8 @@ typedef struct proxHidDeviceInfo {
 PROX_API proxResult proxEnumerateHidDevices(proxHidDeviceInfo* infos, int32_t capacity, int32_t* count);
 
 typedef struct proxHidDeviceId {
-  uint32_t index1; /* index + 1; 0 is null */
-  uint32_t reserved;
+  uint32_t index1;   /* index + 1; 0 is null */
+  uint32_t reserved; /* the slot's generation */
   proxWorldId world;
 } proxHidDeviceId;
 
@@ -87,8 +87,8 @@ typedef struct proxHidDeviceStats {
 
 /* Opens a device and starts its thread (reads, integrates, writes outputs).
  * PROX_ERROR_FILE when no supported device matches or it cannot be opened.
- * The device lives until proxHidDevice_Close or its world's destruction.
- * Game thread. */
+ * The device lives until proxHidDevice_Destroy or its world's destruction
+ * (devices.h says how every device is let go of). Game thread. */
 PROX_API proxResult proxWorld_OpenHidDevice(proxWorldId world, const proxHidDeviceDef* def,
                                             proxHidDeviceId* device);
 /* The def that attaches it with proxBody_SetDevice. Game thread. */
@@ -99,7 +99,11 @@ PROX_API proxResult proxHidDevice_GetStats(proxHidDeviceId device, proxHidDevice
 PROX_API proxResult proxHidDevice_GetPose(proxHidDeviceId device, proxPose* pose);
 /* Stops its thread and closes it; a tool still holding it has no pose from
  * then on (the force fades). Safe while the world's threads run. Game thread. */
+PROX_API proxResult proxHidDevice_Destroy(proxHidDeviceId device);
+/* Deprecated: proxHidDevice_Destroy under its old name (kept until at least 0.5). */
 PROX_API proxResult proxHidDevice_Close(proxHidDeviceId device);
+/* Whether the id names a live (open) HID device. Any thread. */
+PROX_API proxBool proxHidDevice_IsValid(proxHidDeviceId device);
 
 #ifdef __cplusplus
 }

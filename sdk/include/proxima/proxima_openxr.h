@@ -131,10 +131,12 @@ PROX_API proxResult proxXrDevice_GetDeviceDef(proxXrDeviceId device, proxDeviceD
 /* Any thread. */
 PROX_API proxResult proxXrDevice_GetStats(proxXrDeviceId device, proxXrDeviceStats* stats);
 /* Stops the device's thread (a vibration playing is stopped) and destroys
- * its action space: call it before the app destroys its session, spaces or
- * actions. The tool it held loses its pose and its force fades. The game
- * thread. */
+ * its action space: call it, or destroy the world (which destroys its XR
+ * devices), before the app destroys its session, spaces or actions. The
+ * tool it held loses its pose and its force fades. The game thread. */
 PROX_API proxResult proxXrDevice_Destroy(proxXrDeviceId device);
+/* Whether the id names a live XR device. Any thread. */
+PROX_API proxBool proxXrDevice_IsValid(proxXrDeviceId device);
 
 /* Optional helper: creates Proxima's pose (POSE_INPUT) and vibration
  * (VIBRATION_OUTPUT) actions, "<namePrefix>_grip" and "<namePrefix>_haptic",

@@ -77,19 +77,6 @@ extern std::vector<WorldEntry> g_worlds;
 // The live world an id names, called from its game thread (else fails).
 runtime::World& world_of(proxWorldId id, const char* what = "world");
 
-// Makes a world's streamed device ids invalid, waiting for calls under way
-// on other threads to finish with them (stream_device.cpp). Before the world
-// is destroyed, with its threads stopped.
-void release_stream_devices(proxWorldId world);
-// HID devices (hid_device.cpp, built with PROX_WITH_HIDAPI). A def that
-// reads through a HID device's callbacks (builtin_device.h) fails unless
-// that device is open and of `world`; one exactly as Proxima made it sets
-// `out` to the device, for the tool to hold directly. Any other def is left
-// alone. And closing a world's devices before the world is destroyed, with
-// its threads stopped.
-void hid_device_def(const proxDeviceDef& def, proxWorldId world, runtime::Device& out);
-void release_hid_devices(proxWorldId world);
-
 inline runtime::Handle mesh_of(proxMeshId id, runtime::World*& world) {
   world = &world_of(id.world, "mesh's world");
   if (id.index1 == 0) fail(PROX_ERROR_INVALID_HANDLE, "mesh is a null id");

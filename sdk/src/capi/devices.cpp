@@ -1,67 +1,55 @@
 // Devices: the application's callbacks, and the built-in scripted device.
-#include "capi/builtin_device.h"
 #include "capi/common.h"
+#include "capi/device_table.h"
 
 #include "io/poses.h"
-#include "runtime/stream_device.h"
+#include "runtime/scripted_device.h"
 
 using namespace prox;
 using namespace prox::capi;
 
 namespace {
 
-// A C device behind the runtime's device: converts on the haptic thread
-// (no allocation, no lock).
-struct DeviceAdapter {
-  explicit DeviceAdapter(const proxDeviceDef& d) : def(d) {}
-  static bool read(void* user, runtime::DevicePose* out) {
-    const auto* self = static_cast<const DeviceAdapter*>(user);
+// The application's callbacks, one more device: converts on the haptic
+// thread (no allocation, no lock).
+class CallbackDevice final : public runtime::HapticDevice {
+ public:
+  // `keep`: what the def's userData points to, when the table owns it (a
+  // def from a GetDeviceDef whose writeWrench the application replaced).
+  CallbackDevice(const proxDeviceDef& def, std::shared_ptr<runtime::HapticDevice> keep)
+      : def_(def), keep_(std::move(keep)) {}
+
+  bool read_pose(runtime::DevicePose* out) override {
     proxPose p{};
-    if (!self->def.readPose(self->def.userData, &p)) return false;
+    if (!def_.readPose(def_.userData, &p)) return false;
     out->position[0] = p.position.x, out->position[1] = p.position.y, out->position[2] = p.position.z;
     out->rotation[0] = p.rotation.w, out->rotation[1] = p.rotation.x, out->rotation[2] = p.rotation.y,
     out->rotation[3] = p.rotation.z;
     return true;
   }
-  static void write(void* user, const runtime::DeviceWrench* w) {
-    const auto* self = static_cast<const DeviceAdapter*>(user);
-    const proxWrench out{{w->force[0], w->force[1], w->force[2]},
-                         {w->torque[0], w->torque[1], w->torque[2]},
-                         w->limited ? 1 : 0};
-    self->def.writeWrench(self->def.userData, &out);
+  void write_wrench(const runtime::DeviceWrench& w) override {
+    if (!def_.writeWrench) return;
+    const proxWrench out{{w.force[0], w.force[1], w.force[2]},
+                         {w.torque[0], w.torque[1], w.torque[2]},
+                         w.limited ? 1 : 0};
+    def_.writeWrench(def_.userData, &out);
   }
-  proxDeviceDef def;
+
+ private:
+  proxDeviceDef def_;
+  std::shared_ptr<runtime::HapticDevice> keep_;
 };
 
-proxScriptedDeviceId add_scripted(proxWorldId world, runtime::World& w,
-                                  std::vector<runtime::ScriptedPose> poses, double seconds_per_pose,
-                                  bool loop) {
-  const std::uint32_t i = w.add_scripted_device(
-      std::make_unique<runtime::ScriptedDevice>(std::move(poses), seconds_per_pose, loop));
-  return {i + 1, 0, world};
+constexpr DeviceKind kScripted = DeviceKind::Scripted;
+
+proxScriptedDeviceId add_scripted(proxWorldId world, std::vector<runtime::ScriptedPose> poses,
+                                  double seconds_per_pose, bool loop) {
+  const DeviceSlot slot = add_device(
+      world, kScripted, std::make_shared<runtime::ScriptedDevice>(std::move(poses), seconds_per_pose, loop));
+  return {slot.index1, slot.generation, world};
 }
 
-runtime::ScriptedDevice& scripted_of(proxScriptedDeviceId id) {
-  const runtime::World& w = world_of(id.world, "device's world");
-  if (id.index1 == 0) fail(PROX_ERROR_INVALID_HANDLE, "device is a null id");
-  runtime::ScriptedDevice* d = w.scripted_device(id.index1 - 1);
-  if (!d) fail(PROX_ERROR_INVALID_HANDLE, "device does not name a scripted device of its world");
-  return *d;
-}
-
-using ScriptedDef = BuiltinDevice<runtime::ScriptedDevice>;
-
-// A def that reads through a built-in device of type D must name one of the
-// tool's world (one of another world would be gone while this one still
-// calls it); one exactly as Proxima made it sets `out` to that device.
-template <typename D>
-void take_builtin(const proxDeviceDef& def, const runtime::World& w, runtime::Device& out) {
-  if (!BuiltinDevice<D>::claims(def)) return;
-  if (!w.owns_device(static_cast<const D*>(def.userData)))
-    fail(PROX_ERROR_INVALID_ARGUMENT,
-         "def is a built-in device of another world (a device can hold only its own world's tools)");
-  if (D* device = BuiltinDevice<D>::of(def)) out = device->device();
-}
+DeviceSlot slot_of(proxScriptedDeviceId id) { return {id.index1, id.reserved}; }
 
 }  // namespace
 
@@ -83,30 +71,24 @@ proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def) {
     }
     need_def(*def, "proxDefaultDeviceDef");
     if (!def->readPose) fail(PROX_ERROR_INVALID_ARGUMENT, "def->readPose is NULL");
-    // Proxima's own devices, as they came, are held directly (and are
-    // handed the closest distance); any other def through its callbacks.
-    runtime::Device d;
-    take_builtin<runtime::ScriptedDevice>(*def, *w, d);
-    take_builtin<runtime::StreamDevice>(*def, *w, d);
-#if PROX_WITH_HIDAPI
-    hid_device_def(*def, tool.world, d);
-#endif
-    if (d.attached()) {
-      // One device, one hand: a built-in device drives one tool at a time.
-      const int holder = w->device_holder(d.user);
+    // A device Proxima made, as it came, is held directly (and is handed
+    // the closest distance, which proxWrench does not carry); any other def
+    // through its callbacks.
+    bool direct = false;
+    std::shared_ptr<runtime::HapticDevice> own = table_device(*def, tool.world, &direct);
+    if (own) {
+      // One device, one hand: a device of Proxima's drives one tool at a time.
+      const int holder = w->device_holder(own.get());
       if (holder >= 0 && static_cast<std::uint32_t>(holder) != h.index)
         fail(PROX_ERROR_INVALID_ARGUMENT, "the device already holds another tool (body slot " +
                                               std::to_string(holder) +
                                               "); give that tool another device or NULL first");
-      w->set_device(h, d);
+    }
+    if (direct) {
+      w->set_device(h, runtime::Device{std::move(own)});
       return;
     }
-    auto adapter = std::make_shared<DeviceAdapter>(*def);
-    d.read_pose = &DeviceAdapter::read;
-    d.write_wrench = def->writeWrench ? &DeviceAdapter::write : nullptr;
-    d.user = adapter.get();
-    d.owner = adapter;
-    w->set_device(h, d);
+    w->set_device(h, runtime::Device{std::make_shared<CallbackDevice>(*def, std::move(own))});
   });
 }
 
@@ -122,7 +104,7 @@ proxResult proxWorld_CreateScriptedDevice(proxWorldId world, const proxScriptedD
   return guard("proxWorld_CreateScriptedDevice", [&] {
     need(device, "device");
     *device = proxScriptedDeviceId{};
-    runtime::World& w = world_of(world);
+    world_of(world);
     need(def, "def");
     need_def(*def, "proxDefaultScriptedDeviceDef");
     if (def->poseCount < 1) fail(PROX_ERROR_INVALID_ARGUMENT, "def->poseCount must be >= 1");
@@ -132,7 +114,7 @@ proxResult proxWorld_CreateScriptedDevice(proxWorldId world, const proxScriptedD
     for (int32_t i = 0; i < def->poseCount; ++i)
       path[std::size_t(i)] =
           runtime::ScriptedPose::of(to_pose(def->poses[i], "def->poses[" + std::to_string(i) + "]"));
-    *device = add_scripted(world, w, std::move(path), def->secondsPerPose, def->loop != 0);
+    *device = add_scripted(world, std::move(path), def->secondsPerPose, def->loop != 0);
   });
 }
 
@@ -141,7 +123,7 @@ proxResult proxWorld_LoadScriptedDevice(proxWorldId world, const char* path, dou
   return guard("proxWorld_LoadScriptedDevice", [&] {
     need(device, "device");
     *device = proxScriptedDeviceId{};
-    runtime::World& w = world_of(world);
+    world_of(world);
     need(path, "path");
     need_positive(secondsPerPose, "secondsPerPose");
     std::vector<io::PoseRecord> records;
@@ -153,21 +135,24 @@ proxResult proxWorld_LoadScriptedDevice(proxWorldId world, const char* path, dou
       for (int k = 0; k < 4; ++k) p.rotation[k] = r.rotation[k];
       poses.push_back(p);
     }
-    *device = add_scripted(world, w, std::move(poses), secondsPerPose, loop != 0);
+    *device = add_scripted(world, std::move(poses), secondsPerPose, loop != 0);
   });
 }
 
 proxResult proxScriptedDevice_GetDeviceDef(proxScriptedDeviceId device, proxDeviceDef* def) {
   return guard("proxScriptedDevice_GetDeviceDef", [&] {
     need(def, "def");
-    *def = ScriptedDef::def_of(scripted_of(device));
+    world_of(device.world, "device's world");
+    *def = device_def(DeviceUse(kScripted, slot_of(device), &device.world));
   });
 }
 
 proxResult proxScriptedDevice_GetRecord(proxScriptedDeviceId device, proxScriptedDeviceRecord* record) {
   return guard("proxScriptedDevice_GetRecord", [&] {
     need(record, "record");
-    const runtime::ScriptedRecord r = scripted_of(device).record();
+    world_of(device.world, "device's world");
+    const runtime::ScriptedRecord r =
+        DeviceUse(kScripted, slot_of(device), &device.world).as<runtime::ScriptedDevice>().record();
     *record = proxScriptedDeviceRecord{};
     record->reads = r.reads;
     record->writes = r.writes;
@@ -179,6 +164,14 @@ proxResult proxScriptedDevice_GetRecord(proxScriptedDeviceId device, proxScripte
     record->lastTorque = to_c(r.last_torque);
     record->allFinite = r.finite ? 1 : 0;
   });
+}
+
+proxResult proxScriptedDevice_Destroy(proxScriptedDeviceId device) {
+  return guard("proxScriptedDevice_Destroy", [&] { destroy_device(kScripted, slot_of(device), &device.world); });
+}
+
+proxBool proxScriptedDevice_IsValid(proxScriptedDeviceId device) {
+  return valid("proxScriptedDevice_IsValid", [&] { DeviceUse(kScripted, slot_of(device), &device.world); });
 }
 
 }  // extern "C"

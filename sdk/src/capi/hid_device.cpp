@@ -1,9 +1,8 @@
-// HID devices through hidapi (proxima_hid.h). A device is owned here, by
-// its world: proxHidDevice_Close stops its thread and closes it but keeps
-// the object until the world is destroyed, so a haptic loop still holding
-// it reads "no pose" from live memory rather than from a freed one.
-#include "capi/builtin_device.h"
+// HID devices through hidapi (proxima_hid.h), in the device table as
+// every device is (device_table.h): proxHidDevice_Destroy lets the tool go,
+// stops the device's thread and closes it.
 #include "capi/common.h"
+#include "capi/device_table.h"
 
 #include <proxima/proxima_hid.h>
 
@@ -14,26 +13,16 @@ using namespace prox::capi;
 
 namespace {
 
-struct HidEntry {
-  std::uint64_t world = 0;  // world_key() of its world; 0: free
-  bool open = false;        // not closed: the id is valid
-  std::unique_ptr<devices::HidDevice> device;
+constexpr DeviceKind kHid = DeviceKind::Hid;
+
+DeviceSlot slot_of(proxHidDeviceId id) { return {id.index1, id.reserved}; }
+
+// A HID device in use for the length of one call, from its world's game
+// thread.
+struct HidUse : DeviceUse {
+  explicit HidUse(const proxHidDeviceId& id) : DeviceUse(kHid, slot_of(id), &id.world) {}
+  devices::HidDevice& device() const { return as<devices::HidDevice>(); }
 };
-
-std::mutex g_hid_mutex;  // game threads only
-std::vector<HidEntry> g_hid;
-
-// Under g_hid_mutex.
-devices::HidDevice& hid_of(proxHidDeviceId id) {
-  world_of(id.world, "device's world");
-  if (id.index1 == 0) fail(PROX_ERROR_INVALID_HANDLE, "device is a null id");
-  if (id.index1 > g_hid.size() || g_hid[id.index1 - 1].world != world_key(id.world))
-    fail(PROX_ERROR_INVALID_HANDLE, "device does not name a HID device of its world");
-  if (!g_hid[id.index1 - 1].open) fail(PROX_ERROR_INVALID_HANDLE, "device was closed");
-  return *g_hid[id.index1 - 1].device;
-}
-
-using HidDef = BuiltinDevice<devices::HidDevice>;
 
 void copy(char* out, std::size_t capacity, const std::string& s) {
   const std::size_t n = std::min(s.size(), capacity - 1);
@@ -49,39 +38,6 @@ void need_range(double v, double lo, double hi, const char* name) {
 }
 
 }  // namespace
-
-namespace prox::capi {
-
-void hid_device_def(const proxDeviceDef& def, proxWorldId world, runtime::Device& out) {
-  if (!HidDef::claims(def)) return;
-  bool ours = false;
-  {
-    std::lock_guard<std::mutex> lock(g_hid_mutex);
-    for (const HidEntry& e : g_hid)
-      if (e.device.get() == def.userData) ours = e.open && e.world == world_key(world);
-  }
-  if (!ours)
-    fail(PROX_ERROR_INVALID_ARGUMENT,
-         "def is a HID device of another world, or a closed one (a device can hold only its own world's "
-         "tools)");
-  if (devices::HidDevice* d = HidDef::of(def)) out = d->device();
-}
-
-void release_hid_devices(proxWorldId world) {
-  const std::uint64_t key = world_key(world);
-  std::vector<std::unique_ptr<devices::HidDevice>> doomed;
-  {
-    std::lock_guard<std::mutex> lock(g_hid_mutex);
-    for (HidEntry& e : g_hid) {
-      if (e.world != key) continue;
-      doomed.push_back(std::move(e.device));
-      e = HidEntry{};
-    }
-  }
-  doomed.clear();  // joins their threads, outside the lock
-}
-
-}  // namespace prox::capi
 
 extern "C" {
 
@@ -166,22 +122,16 @@ proxResult proxWorld_OpenHidDevice(proxWorldId world, const proxHidDeviceDef* de
     std::string error;
     std::unique_ptr<devices::HidDevice> d = devices::HidDevice::open(s, &error);
     if (!d) fail(PROX_ERROR_FILE, error);
-    std::lock_guard<std::mutex> lock(g_hid_mutex);
-    std::size_t i = 0;
-    while (i < g_hid.size() && g_hid[i].world != 0) ++i;
-    if (i == g_hid.size()) g_hid.emplace_back();
-    g_hid[i].world = world_key(world);
-    g_hid[i].open = true;
-    g_hid[i].device = std::move(d);
-    *device = {uint32_t(i + 1), 0, world};
+    const DeviceSlot slot = add_device(world, kHid, std::shared_ptr<devices::HidDevice>(std::move(d)));
+    *device = {slot.index1, slot.generation, world};
   });
 }
 
 proxResult proxHidDevice_GetDeviceDef(proxHidDeviceId device, proxDeviceDef* def) {
   return guard("proxHidDevice_GetDeviceDef", [&] {
     need(def, "def");
-    std::lock_guard<std::mutex> lock(g_hid_mutex);
-    *def = HidDef::def_of(hid_of(device));
+    world_of(device.world, "device's world");
+    *def = device_def(HidUse(device));
   });
 }
 
@@ -189,8 +139,8 @@ proxResult proxHidDevice_GetStats(proxHidDeviceId device, proxHidDeviceStats* st
   return guard("proxHidDevice_GetStats", [&] {
     need(stats, "stats");
     *stats = proxHidDeviceStats{};
-    std::lock_guard<std::mutex> lock(g_hid_mutex);
-    const devices::HidStats s = hid_of(device).stats();
+    world_of(device.world, "device's world");
+    const devices::HidStats s = HidUse(device).device().stats();
     stats->profile = static_cast<proxHidProfile>(s.profile);
     stats->connected = s.connected ? 1 : 0;
     stats->reportsRead = s.reports_read;
@@ -208,23 +158,23 @@ proxResult proxHidDevice_GetStats(proxHidDeviceId device, proxHidDeviceStats* st
 proxResult proxHidDevice_GetPose(proxHidDeviceId device, proxPose* pose) {
   return guard("proxHidDevice_GetPose", [&] {
     need(pose, "pose");
-    std::lock_guard<std::mutex> lock(g_hid_mutex);
-    const runtime::DevicePose p = hid_of(device).pose();
+    world_of(device.world, "device's world");
+    const runtime::DevicePose p = HidUse(device).device().pose();
     *pose = {{p.position[0], p.position[1], p.position[2]},
              {p.rotation[0], p.rotation[1], p.rotation[2], p.rotation[3]}};
   });
 }
 
+proxResult proxHidDevice_Destroy(proxHidDeviceId device) {
+  return guard("proxHidDevice_Destroy", [&] { destroy_device(kHid, slot_of(device), &device.world); });
+}
+
 proxResult proxHidDevice_Close(proxHidDeviceId device) {
-  return guard("proxHidDevice_Close", [&] {
-    devices::HidDevice* d = nullptr;
-    {
-      std::lock_guard<std::mutex> lock(g_hid_mutex);
-      d = &hid_of(device);
-      g_hid[device.index1 - 1].open = false;
-    }
-    d->close();  // the object stays until its world goes
-  });
+  return guard("proxHidDevice_Close", [&] { destroy_device(kHid, slot_of(device), &device.world); });
+}
+
+proxBool proxHidDevice_IsValid(proxHidDeviceId device) {
+  return valid("proxHidDevice_IsValid", [&] { HidUse use(device); });
 }
 
 }  // extern "C"

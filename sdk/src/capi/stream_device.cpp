@@ -1,61 +1,25 @@
 // The streamed device. PushPose and GetWrench may be called from any
-// thread and must neither lock nor allocate, so they cannot go through the
-// world registry (its mutex, its game-thread check): streamed devices live in
-// a fixed table of their own. A caller announces itself in a slot's user
-// count before it checks the slot's owner; a world being destroyed clears
-// the owner first and then waits for the users to leave, so no call ever
-// touches a device that is gone.
-#include "capi/builtin_device.h"
+// thread and must neither lock nor allocate, so they go through the device
+// table's lock-free lookup (device_table.h), never the world registry (its
+// mutex, its game-thread check).
 #include "capi/common.h"
+#include "capi/device_table.h"
 
 #include "runtime/stream_device.h"
-
-#include <atomic>
 
 using namespace prox;
 using namespace prox::capi;
 
 namespace {
 
-constexpr std::uint32_t kMaxStreamDevices = 1024;
+constexpr DeviceKind kStream = DeviceKind::Stream;
 
-struct StreamSlot {
-  std::atomic<std::uint64_t> owner{0};  // world_key() of the world that owns it; 0: free
-  std::atomic<std::uint32_t> users{0};  // calls using the device right now
-  std::atomic<runtime::StreamDevice*> device{nullptr};
-  std::atomic<bool> pushing{false};  // a PushPose is under way (one pusher at a time)
-};
+DeviceSlot slot_of(proxStreamDeviceId id) { return {id.index1, id.reserved}; }
 
-StreamSlot g_slots[kMaxStreamDevices];
-std::mutex g_slots_mutex;  // creation and release, on game threads only
-
-// A device in use for the length of one call.
-class DeviceUse {
- public:
-  explicit DeviceUse(proxStreamDeviceId id) {
-    if (id.index1 == 0) fail(PROX_ERROR_INVALID_HANDLE, "device is a null id");
-    if (id.index1 > kMaxStreamDevices || id.world.index1 == 0)
-      fail(PROX_ERROR_INVALID_HANDLE, "device does not name a streamed device");
-    StreamSlot& slot = g_slots[id.index1 - 1];
-    slot.users.fetch_add(1);
-    if (slot.owner.load() != world_key(id.world)) {
-      slot.users.fetch_sub(1);
-      fail(PROX_ERROR_INVALID_HANDLE,
-           "device does not name a live streamed device (its world was destroyed, or it was never created)");
-    }
-    slot_ = &slot;
-    device_ = slot.device.load();
-  }
-  ~DeviceUse() { slot_->users.fetch_sub(1); }
-  DeviceUse(const DeviceUse&) = delete;
-  DeviceUse& operator=(const DeviceUse&) = delete;
-
-  runtime::StreamDevice& device() const { return *device_; }
-  StreamSlot& slot() const { return *slot_; }
-
- private:
-  StreamSlot* slot_ = nullptr;
-  runtime::StreamDevice* device_ = nullptr;
+// A streamed device in use for the length of one call.
+struct StreamUse : DeviceUse {
+  explicit StreamUse(const proxStreamDeviceId& id) : DeviceUse(kStream, slot_of(id), &id.world) {}
+  runtime::StreamDevice& device() const { return as<runtime::StreamDevice>(); }
 };
 
 bool finite3(double a, double b, double c) {
@@ -81,21 +45,6 @@ void check_sample(const proxPose& pose, double time, runtime::StreamSample& out)
 
 }  // namespace
 
-namespace prox::capi {
-
-void release_stream_devices(proxWorldId world) {
-  const std::uint64_t key = world_key(world);
-  std::lock_guard<std::mutex> lock(g_slots_mutex);
-  for (StreamSlot& slot : g_slots) {
-    if (slot.owner.load() != key) continue;
-    slot.owner.store(0);
-    while (slot.users.load() != 0) std::this_thread::yield();
-    slot.device.store(nullptr);
-  }
-}
-
-}  // namespace prox::capi
-
 extern "C" {
 
 double proxGetTime(void) { return runtime::stream_clock(); }
@@ -116,7 +65,7 @@ proxResult proxWorld_CreateStreamDevice(proxWorldId world, const proxStreamDevic
   return guard("proxWorld_CreateStreamDevice", [&] {
     need(device, "device");
     *device = proxStreamDeviceId{};
-    runtime::World& w = world_of(world);
+    world_of(world);
     need(def, "def");
     need_def(*def, "proxDefaultStreamDeviceDef");
     runtime::StreamSettings s;
@@ -143,33 +92,24 @@ proxResult proxWorld_CreateStreamDevice(proxWorldId world, const proxStreamDevic
     s.max_extrapolation = def->maxExtrapolation;
     s.stale_after = def->staleAfter;
 
-    std::lock_guard<std::mutex> lock(g_slots_mutex);
-    std::uint32_t i = 0;
-    while (i < kMaxStreamDevices && (g_slots[i].owner.load() != 0 || g_slots[i].device.load() != nullptr))
-      ++i;
-    if (i == kMaxStreamDevices)
-      fail(PROX_ERROR_CAPACITY, "there are already " + std::to_string(kMaxStreamDevices) +
-                                    " streamed devices; destroy a world to free some");
-    const std::uint32_t index = w.add_stream_device(std::make_unique<runtime::StreamDevice>(s));
-    g_slots[i].device.store(w.stream_device(index));
-    g_slots[i].owner.store(world_key(world));
-    *device = {i + 1, 0, world};
+    const DeviceSlot slot = add_device(world, kStream, std::make_shared<runtime::StreamDevice>(s));
+    *device = {slot.index1, slot.generation, world};
   });
 }
 
 proxResult proxStreamDevice_PushPose(proxStreamDeviceId device, const proxPose* pose, double timeSeconds) {
   return guard("proxStreamDevice_PushPose", [&] {
-    const DeviceUse use(device);
-    StreamSlot& slot = use.slot();
-    if (slot.pushing.exchange(true, std::memory_order_acquire))
+    const StreamUse use(device);
+    runtime::StreamDevice& d = use.device();
+    if (!d.begin_push())
       fail(PROX_ERROR_WRONG_THREAD,
            "another thread is pushing to this device at the same time (one at a time)");
-    // Released on every way out, so the next pusher (on any thread) sees
-    // this one's writes.
+    // Ended on every way out, so the next pusher (on any thread) sees this
+    // one's writes.
     struct Done {
-      StreamSlot& slot;
-      ~Done() { slot.pushing.store(false, std::memory_order_release); }
-    } done{slot};
+      runtime::StreamDevice& d;
+      ~Done() { d.end_push(); }
+    } done{d};
     if (!pose) {
       use.device().count_refused();
       fail(PROX_ERROR_INVALID_ARGUMENT, "pose is NULL");
@@ -188,7 +128,7 @@ proxResult proxStreamDevice_PushPose(proxStreamDeviceId device, const proxPose* 
 proxResult proxStreamDevice_GetWrench(proxStreamDeviceId device, proxWrench* wrench) {
   return guard("proxStreamDevice_GetWrench", [&] {
     need(wrench, "wrench");
-    const DeviceUse use(device);
+    const StreamUse use(device);
     const runtime::DeviceWrench w = use.device().wrench();
     *wrench = {
         {w.force[0], w.force[1], w.force[2]}, {w.torque[0], w.torque[1], w.torque[2]}, w.limited ? 1 : 0};
@@ -199,8 +139,8 @@ proxResult proxStreamDevice_GetDeviceDef(proxStreamDeviceId device, proxDeviceDe
   return guard("proxStreamDevice_GetDeviceDef", [&] {
     need(def, "def");
     world_of(device.world, "device's world");
-    const DeviceUse use(device);
-    *def = BuiltinDevice<runtime::StreamDevice>::def_of(use.device());
+    const StreamUse use(device);
+    *def = device_def(use);
   });
 }
 
@@ -209,7 +149,7 @@ proxResult proxStreamDevice_GetStats(proxStreamDeviceId device, proxStreamDevice
     need(stats, "stats");
     *stats = proxStreamDeviceStats{};
     world_of(device.world, "device's world");
-    const DeviceUse use(device);
+    const StreamUse use(device);
     const runtime::StreamStats s = use.device().stats();
     stats->samplesPushed = s.pushed;
     stats->samplesDropped = s.dropped;
@@ -222,6 +162,14 @@ proxResult proxStreamDevice_GetStats(proxStreamDeviceId device, proxStreamDevice
     stats->maxExtrapolation = s.max_extrapolation;
     stats->lastSampleAge = s.last_sample_age;
   });
+}
+
+proxResult proxStreamDevice_Destroy(proxStreamDeviceId device) {
+  return guard("proxStreamDevice_Destroy", [&] { destroy_device(kStream, slot_of(device), &device.world); });
+}
+
+proxBool proxStreamDevice_IsValid(proxStreamDeviceId device) {
+  return valid("proxStreamDevice_IsValid", [&] { StreamUse use(device); });
 }
 
 }  // extern "C"

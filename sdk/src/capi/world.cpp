@@ -1,5 +1,6 @@
 // Worlds: create, destroy, the deterministic step and its statistics.
 #include "capi/common.h"
+#include "capi/device_table.h"
 
 using namespace prox;
 using namespace prox::capi;
@@ -67,10 +68,7 @@ proxResult proxDestroyWorld(proxWorldId world) {
     // No device callback runs once the threads stop; then no other thread
     // may still hold one of the world's streamed devices.
     doomed->stop_threads();
-    release_stream_devices(world);
-#if PROX_WITH_HIDAPI
-    release_hid_devices(world);
-#endif
+    release_devices(world);
   });
 }
 

@@ -243,18 +243,6 @@ void HidDevice::write_outputs(double now) {
   }
 }
 
-runtime::Device HidDevice::device() {
-  runtime::Device d;
-  d.read_pose = [](void* user, runtime::DevicePose* pose) {
-    return static_cast<HidDevice*>(user)->read_pose(pose);
-  };
-  d.write_wrench = [](void* user, const runtime::DeviceWrench* w) {
-    static_cast<HidDevice*>(user)->write_wrench(*w);
-  };
-  d.user = this;
-  return d;
-}
-
 bool HidDevice::read_pose(runtime::DevicePose* pose) {
   pose_reads_.fetch_add(1, std::memory_order_relaxed);
   const Published p = published_.load();

@@ -58,7 +58,7 @@ struct HidStats {
   double last_report_age = -1.0;  // s
 };
 
-class HidDevice {
+class HidDevice final : public runtime::HapticDevice {
  public:
   // Finds and opens the device, reads its calibration and starts its
   // thread; null with *error set when there is none or it will not open.
@@ -68,13 +68,12 @@ class HidDevice {
   HidDevice& operator=(const HidDevice&) = delete;
 
   // Stops the thread and closes the device; from then on there is no pose.
-  void close();
+  void close() override;
   bool closed() const { return closed_.load(std::memory_order_acquire); }
 
   // The haptic thread's side.
-  runtime::Device device();
-  bool read_pose(runtime::DevicePose* pose);
-  void write_wrench(const runtime::DeviceWrench& wrench);
+  bool read_pose(runtime::DevicePose* pose) override;
+  void write_wrench(const runtime::DeviceWrench& wrench) override;
 
   HidStats stats() const;
   // The pose last integrated (valid or not).

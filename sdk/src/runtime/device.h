@@ -1,5 +1,6 @@
-// A haptic device as the haptic loop sees it: two plain callbacks and the
-// caller's pointer, called from the haptic thread only (docs/threading.md).
+// A haptic device as the runtime sees it: an object that reads the tool's
+// pose and takes the wrench, called from the haptic thread only
+// (docs/threading.md).
 #pragma once
 
 #include <limits>
@@ -32,18 +33,38 @@ struct DeviceWrench {
   double safety_distance = 0.0, cutoff = 0.0;
 };
 
-struct Device {
-  // Fills *pose and returns true, or returns false when the device has no
-  // pose this tick (the force then fades out).
-  bool (*read_pose)(void* user, DevicePose* pose) = nullptr;
-  // Receives the wrench to render; may be null (a device that only moves).
-  void (*write_wrench)(void* user, const DeviceWrench* wrench) = nullptr;
-  void* user = nullptr;
-  // Keeps what `user` points to alive while a tool holds the device (set
-  // by owners such as the C API's adapters; may be empty).
-  std::shared_ptr<void> owner;
+// Every device a tool can hold implements this: Proxima's own (scripted,
+// streamed, HID, OpenXR) and the application's callbacks alike. The runtime
+// holds the device itself; nothing is recognised by its callbacks.
+class HapticDevice {
+ public:
+  virtual ~HapticDevice() = default;
+  // Haptic thread (no lock, no allocation, no system call): fills *pose and
+  // returns true, or returns false when the device has no pose this tick
+  // (the force then fades out).
+  virtual bool read_pose(DevicePose* pose) = 0;
+  // Haptic thread, as read_pose: the wrench to render. The default is a
+  // device that only moves.
+  virtual void write_wrench(const DeviceWrench& wrench) { (void)wrench; }
+  // Game thread: stops what the device runs of its own (a thread, an
+  // effect on the hardware); from then on it has no pose. Called when its
+  // owner lets it go (its id destroyed, its world destroyed); idempotent.
+  virtual void close() {}
+};
 
-  bool attached() const { return read_pose != nullptr; }
+// What a tool holds. Shared, so that a device its owner lets go of lives
+// on until the threads have let go of the tool too: the last holder is the
+// game thread (the threads free retired tools there), never the haptic one.
+struct Device {
+  std::shared_ptr<HapticDevice> impl;
+
+  bool attached() const { return impl != nullptr; }
+  HapticDevice* operator->() const { return impl.get(); }
+  // A device its caller keeps alive for as long as any tool holds it
+  // (tests and benchmarks that own theirs on the stack).
+  static Device borrowed(HapticDevice& device) {
+    return {std::shared_ptr<HapticDevice>(std::shared_ptr<void>(), &device)};
+  }
 };
 
 }  // namespace prox::runtime

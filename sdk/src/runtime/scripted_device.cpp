@@ -38,18 +38,6 @@ ScriptedDevice::ScriptedDevice(std::vector<ScriptedPose> poses, double seconds_p
     throw std::invalid_argument("seconds per pose must be > 0");
 }
 
-Device ScriptedDevice::device() {
-  Device d;
-  d.read_pose = [](void* user, DevicePose* pose) {
-    return static_cast<ScriptedDevice*>(user)->read_pose(pose);
-  };
-  d.write_wrench = [](void* user, const DeviceWrench* w) {
-    static_cast<ScriptedDevice*>(user)->write_wrench(*w);
-  };
-  d.user = this;
-  return d;
-}
-
 ScriptedPose ScriptedDevice::pose_at(double t) const {
   const double last = double(poses_.size() - 1);
   double u = std::max(0.0, t / seconds_per_pose_);
@@ -68,6 +56,7 @@ ScriptedPose ScriptedDevice::pose_at(double t) const {
 }
 
 bool ScriptedDevice::read_pose(DevicePose* pose) {
+  if (closed_.load(std::memory_order_acquire)) return false;
   const std::int64_t now = now_ns();
   std::int64_t start = start_ns_.load(std::memory_order_relaxed);
   if (start < 0) start_ns_.store(start = now, std::memory_order_relaxed);

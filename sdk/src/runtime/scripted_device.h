@@ -31,7 +31,7 @@ struct ScriptedRecord {
   Vec3 last_force{0.0}, last_torque{0.0};
 };
 
-class ScriptedDevice {
+class ScriptedDevice final : public HapticDevice {
  public:
   // `poses`: at least one; the device moves through them at
   // `seconds_per_pose` (> 0), interpolating (linearly, and along the
@@ -39,10 +39,10 @@ class ScriptedDevice {
   // last pose, or starts over when `loop`.
   ScriptedDevice(std::vector<ScriptedPose> poses, double seconds_per_pose, bool loop);
 
-  Device device();
-  // What device()'s callbacks do, for callers that hold the device itself.
-  bool read_pose(DevicePose* pose);
-  void write_wrench(const DeviceWrench& wrench);
+  bool read_pose(DevicePose* pose) override;
+  void write_wrench(const DeviceWrench& wrench) override;
+  // From then on, no pose.
+  void close() override { closed_.store(true, std::memory_order_release); }
   ScriptedRecord record() const;
   // The pose at `t` seconds into the path.
   ScriptedPose pose_at(double t) const;
@@ -55,7 +55,7 @@ class ScriptedDevice {
   std::atomic<std::int64_t> start_ns_{-1};
   std::atomic<std::uint64_t> reads_{0}, writes_{0};
   std::atomic<double> progress_{0.0}, max_force_{0.0}, max_torque_{0.0}, max_force_step_{0.0};
-  std::atomic<bool> finite_{true};
+  std::atomic<bool> finite_{true}, closed_{false};
   std::atomic<double> last_[6] = {};
 };
 

@@ -96,24 +96,12 @@ bool StreamDevice::push(const StreamSample& sample) {
   return true;
 }
 
-Device StreamDevice::device() {
-  Device d;
-  d.read_pose = [](void* user, DevicePose* pose) {
-    return static_cast<StreamDevice*>(user)->read_pose(pose);
-  };
-  d.write_wrench = [](void* user, const DeviceWrench* w) {
-    static_cast<StreamDevice*>(user)->write_wrench(*w);
-  };
-  d.user = this;
-  return d;
-}
-
 bool StreamDevice::read_pose(DevicePose* pose) { return read_pose_at(stream_clock(), pose); }
 
 bool StreamDevice::read_pose_at(double now, DevicePose* pose) {
   reads_.fetch_add(1, std::memory_order_relaxed);
   const History h = history_.load();
-  if (h.count == 0 || now - h.arrival > settings_.stale_after) {
+  if (h.count == 0 || now - h.arrival > settings_.stale_after || closed_.load(std::memory_order_acquire)) {
     stale_ticks_.fetch_add(1, std::memory_order_relaxed);
     return false;
   }

@@ -59,7 +59,7 @@ double stream_clock();
 StreamSample stream_pose_at(const StreamSample* samples, int count, double t, const StreamSettings& settings,
                             double* past_newest);
 
-class StreamDevice {
+class StreamDevice final : public HapticDevice {
  public:
   static constexpr int kHistory = 16;  // samples kept for interpolation
 
@@ -69,14 +69,19 @@ class StreamDevice {
   // taken (true); an older or equally old one is dropped and counted
   // (false). The caller validates (finite, non-zero quaternion, time >= 0).
   bool push(const StreamSample& sample);
+  // The one-pusher rule: begin_push is false while another push is under
+  // way; end_push hands the device (and what was pushed) to the next.
+  bool begin_push() { return !pushing_.exchange(true, std::memory_order_acquire); }
+  void end_push() { pushing_.store(false, std::memory_order_release); }
   void count_refused() { refused_.fetch_add(1, std::memory_order_relaxed); }
 
-  // The haptic thread's side (through device()): the pose at the current
-  // time, or false when there is none.
-  Device device();
-  bool read_pose(DevicePose* pose);
+  // The haptic thread's side: the pose at the current time, or false when
+  // there is none.
+  bool read_pose(DevicePose* pose) override;
   bool read_pose_at(double now, DevicePose* pose);
-  void write_wrench(const DeviceWrench& wrench);
+  void write_wrench(const DeviceWrench& wrench) override;
+  // From then on, no pose.
+  void close() override { closed_.store(true, std::memory_order_release); }
 
   // Any thread: the wrench last handed to the device (zero before the first).
   DeviceWrench wrench() const { return wrench_.load(); }
@@ -95,6 +100,7 @@ class StreamDevice {
   SeqLock<History> history_;      // pusher -> haptic
   History own_;                   // pusher's own copy
   SeqLock<DeviceWrench> wrench_;  // haptic -> any
+  std::atomic<bool> pushing_{false}, closed_{false};
   // Pusher's counters.
   std::atomic<std::uint64_t> pushed_{0}, dropped_{0}, refused_{0};
   std::atomic<double> interval_sum_{0.0}, max_interval_{0.0};

@@ -286,10 +286,7 @@ void Threads::haptic_main() {
 
 bool Threads::fade_step(Tool& tool, double dt) {
   const Wrench w = tool.filter.step(Wrench{}, false, dt);
-  if (tool.device.write_wrench) {
-    const DeviceWrench out = device_wrench(w, true, kNoContact, world_.settings_);
-    tool.device.write_wrench(tool.device.user, &out);
-  }
+  if (tool.device.attached()) tool.device->write_wrench(device_wrench(w, true, kNoContact, world_.settings_));
   tool.wrench.store({w});
   if (tool.trace) {
     const Pose device = tool.pose.load().pose;
@@ -304,7 +301,7 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
   bool ok = true;
   if (tool.device.attached()) {
     DevicePose d{};
-    ok = tool.device.read_pose(tool.device.user, &d) && pose_from_device(d, sample.pose);
+    ok = tool.device->read_pose(&d) && pose_from_device(d, sample.pose);
   } else {
     sample = tool.game_pose.load();
   }
@@ -343,10 +340,7 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
   bool limited = false;
   const Wrench w = tool.filter.step(target, valid, dt, &limited);
   if (limited) count(limited_ticks_);
-  if (tool.device.write_wrench) {
-    const DeviceWrench out = device_wrench(w, limited, closest, world_.settings_);
-    tool.device.write_wrench(tool.device.user, &out);
-  }
+  if (tool.device.attached()) tool.device->write_wrench(device_wrench(w, limited, closest, world_.settings_));
   tool.wrench.store({w});
   if (tool.trace) {
     if (limited) flags |= kTraceClipped;

@@ -42,9 +42,9 @@ void World::set_pose(Handle h, const Pose& pose) {
   if (b.type != BodyType::Tool) ++scene_version_;
 }
 
-int World::device_holder(const void* user) const {
+int World::device_holder(const HapticDevice* device) const {
   for (std::uint32_t i = 0; i < bodies_.size(); ++i)
-    if (user && bodies_[i].alive && bodies_[i].type == BodyType::Tool && bodies_[i].device.user == user)
+    if (device && bodies_[i].alive && bodies_[i].type == BodyType::Tool && bodies_[i].device.impl.get() == device)
       return static_cast<int>(i);
   return -1;
 }
@@ -71,28 +71,6 @@ void World::set_device(Handle tool, const Device& device) {
   b.contacts.clear();
   b.wrench = Wrench{};
   threads_->add_tool(tool.index);
-}
-
-std::uint32_t World::add_scripted_device(std::unique_ptr<ScriptedDevice> device) {
-  scripted_devices_.push_back(std::move(device));
-  return static_cast<std::uint32_t>(scripted_devices_.size() - 1);
-}
-
-bool World::owns_device(const ScriptedDevice* device) const {
-  for (const auto& d : scripted_devices_)
-    if (d.get() == device) return true;
-  return false;
-}
-
-bool World::owns_device(const StreamDevice* device) const {
-  for (const auto& d : stream_devices_)
-    if (d.get() == device) return true;
-  return false;
-}
-
-std::uint32_t World::add_stream_device(std::unique_ptr<StreamDevice> device) {
-  stream_devices_.push_back(std::move(device));
-  return static_cast<std::uint32_t>(stream_devices_.size() - 1);
 }
 
 Pose World::current_pose(Handle h) const {

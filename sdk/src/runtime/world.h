@@ -10,8 +10,6 @@
 #include "runtime/device.h"
 #include "runtime/mesh_rig.h"
 #include "runtime/scene.h"
-#include "runtime/scripted_device.h"
-#include "runtime/stream_device.h"
 
 #include <atomic>
 #include <cstdint>
@@ -207,28 +205,13 @@ class World {
   int body_count() const;
   int tool_count() const;
 
-  // A device holds the tool while the threads run (nullptr callbacks: none;
-  // the game thread's set_pose moves it then). While they run, the old
-  // device is faded out and let go of before this returns.
+  // A device holds the tool while the threads run (none: the game thread's
+  // set_pose moves it then). While they run, the old device is faded out
+  // and let go of before this returns.
   void set_device(Handle tool, const Device& device);
   const Device& device(Handle tool) const { return bodies_[tool.index].device; }
-  // The live tool whose device reads through `user` (a built-in device's
-  // object), or -1.
-  int device_holder(const void* user) const;
-  // Scripted devices the world owns (they live as long as it does).
-  std::uint32_t add_scripted_device(std::unique_ptr<ScriptedDevice> device);
-  ScriptedDevice* scripted_device(std::uint32_t index) const {
-    return index < scripted_devices_.size() ? scripted_devices_[index].get() : nullptr;
-  }
-  // Streamed devices, likewise.
-  std::uint32_t add_stream_device(std::unique_ptr<StreamDevice> device);
-  StreamDevice* stream_device(std::uint32_t index) const {
-    return index < stream_devices_.size() ? stream_devices_[index].get() : nullptr;
-  }
-  std::uint32_t stream_device_count() const { return static_cast<std::uint32_t>(stream_devices_.size()); }
-  // Whether `device` is one of this world's scripted (streamed) devices.
-  bool owns_device(const ScriptedDevice* device) const;
-  bool owns_device(const StreamDevice* device) const;
+  // The live tool `device` holds, or -1.
+  int device_holder(const HapticDevice* device) const;
 
   // The threads (docs/threading.md). start_threads fails (false, with
   // `status`) on bad settings; while they run, meshes and bodies may be
@@ -336,8 +319,6 @@ class World {
   // meshes' slots and the view, and the tracking threads' reading of the
   // poses and the view, meet here (never on the haptic path).
   mutable std::mutex scene_mutex_;
-  std::vector<std::unique_ptr<ScriptedDevice>> scripted_devices_;
-  std::vector<std::unique_ptr<StreamDevice>> stream_devices_;
   std::unique_ptr<Threads> threads_;
 };
 

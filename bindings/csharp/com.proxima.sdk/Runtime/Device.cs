@@ -196,5 +196,12 @@ namespace Proxima
         {
             get { Native.Check(Native.proxScriptedDevice_GetRecord(id, out ScriptedDeviceRecord r)); return r; }
         }
+
+        /// <summary>Whether the device is alive (not destroyed, nor its world). Any thread.</summary>
+        public bool IsValid => Native.proxScriptedDevice_IsValid(id);
+
+        /// <summary>Lets the device go: a tool it holds has no pose from then on (its force
+        /// fades out). Game thread.</summary>
+        public void Destroy() => Native.Check(Native.proxScriptedDevice_Destroy(id));
     }
 }

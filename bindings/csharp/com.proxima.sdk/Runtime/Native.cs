@@ -246,6 +246,10 @@ namespace Proxima
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxScriptedDevice_GetRecord(ScriptedDeviceId device,
                                                                    out ScriptedDeviceRecord record);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxScriptedDevice_Destroy(ScriptedDeviceId device);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Bool32 proxScriptedDevice_IsValid(ScriptedDeviceId device);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern double proxGetTime();
@@ -262,6 +266,10 @@ namespace Proxima
         internal static extern Result proxStreamDevice_GetDeviceDef(StreamDeviceId device, out DeviceDef def);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxStreamDevice_GetStats(StreamDeviceId device, out StreamDeviceStats stats);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxStreamDevice_Destroy(StreamDeviceId device);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Bool32 proxStreamDevice_IsValid(StreamDeviceId device);
 
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern ThreadSettings proxDefaultThreadsDef();

@@ -48,7 +48,7 @@ namespace Proxima
     /// at frame rate. A thread of yours pushes timestamped poses; the haptic loop renders
     /// the pose of each 1 kHz tick from them, with no managed code on the haptic thread
     /// (so a garbage collection cannot stall it); the wrench it rendered is read back
-    /// from any thread. Attach it with Body.SetDevice; it lives as long as its world.</summary>
+    /// from any thread. Attach it with Body.SetDevice; it lives until Destroy or its world's end.</summary>
     [StructLayout(LayoutKind.Sequential)]
     public readonly struct StreamDevice
     {
@@ -82,5 +82,12 @@ namespace Proxima
         {
             get { Native.Check(Native.proxStreamDevice_GetStats(id, out StreamDeviceStats s)); return s; }
         }
+
+        /// <summary>Whether the device is alive (not destroyed, nor its world). Any thread.</summary>
+        public bool IsValid => Native.proxStreamDevice_IsValid(id);
+
+        /// <summary>Lets the device go: a tool it holds has no pose from then on (its force
+        /// fades out); pushes from then on throw InvalidHandle. Game thread.</summary>
+        public void Destroy() => Native.Check(Native.proxStreamDevice_Destroy(id));
     }
 }

@@ -1,6 +1,4 @@
-#include "xr/xr_device.h"
-
-#include "runtime/stream_device.h"
+#include "devices/xr/xr_device.h"
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -16,11 +14,20 @@
 #include <windows.h>
 #endif
 
-namespace prox::xr {
+namespace prox::devices::xr {
 namespace {
 
-glm::dquat quat(const proxQuat& q) { return glm::dquat(q.w, q.x, q.y, q.z); }
-glm::dvec3 vec(const proxVec3& v) { return {v.x, v.y, v.z}; }
+glm::dquat quat(const runtime::DevicePose& p) { return glm::dquat(p.rotation[0], p.rotation[1], p.rotation[2], p.rotation[3]); }
+glm::dvec3 vec(const runtime::DevicePose& p) { return {p.position[0], p.position[1], p.position[2]}; }
+
+// The streamed device's settings: the newest pose held, stale after 20
+// ticks (at least 50 ms).
+runtime::StreamSettings stream_settings(const XrSettings& s) {
+  runtime::StreamSettings out;
+  out.mode = runtime::StreamMode::Hold;
+  out.stale_after = std::max(0.05, 20.0 / s.tick_rate);
+  return out;
+}
 
 XrTime ns(double seconds) { return XrTime(std::llround(seconds * 1e9)); }
 
@@ -32,19 +39,26 @@ bool finite(const double* v, int n) {
 
 }  // namespace
 
-XrDevice::XrDevice(const XrSettings& settings) : settings_(settings), state_(settings.def.sessionState) {}
+XrDevice::XrDevice(const XrSettings& settings)
+    : settings_(settings), stream_(stream_settings(settings)), state_(settings.session_state) {}
 
-XrDevice::~XrDevice() { stop(); }
+XrDevice::~XrDevice() { close(); }
 
 void XrDevice::start() {
   running_.store(true);
   thread_ = std::thread([this] { run(); });
 }
 
-void XrDevice::stop() {
-  if (!thread_.joinable()) return;
-  running_.store(false);
-  thread_.join();
+void XrDevice::close() {
+  stream_.close();
+  if (thread_.joinable()) {
+    running_.store(false);
+    thread_.join();
+  }
+  if (settings_.pose_space != XR_NULL_HANDLE) {
+    settings_.fn.destroySpace(settings_.pose_space);
+    settings_.pose_space = XR_NULL_HANDLE;
+  }
 }
 
 void XrDevice::on_frame(XrTime predicted, XrDuration period, double clock_now) {
@@ -54,7 +68,7 @@ void XrDevice::on_frame(XrTime predicted, XrDuration period, double clock_now) {
 void XrDevice::run() {
   using clock = std::chrono::steady_clock;
   const auto period = std::chrono::duration_cast<clock::duration>(
-      std::chrono::duration<double>(1.0 / settings_.def.tickRate));
+      std::chrono::duration<double>(1.0 / settings_.tick_rate));
   auto next = clock::now();
   while (running_.load(std::memory_order_acquire)) {
     tick();
@@ -74,21 +88,21 @@ void XrDevice::on_runtime_time(XrTime time, double clock_now) {
 
 // "Now" from the app's time conversion extension; false without one, or
 // when the runtime refuses the conversion (recorded in lastXrResult).
-bool XrDevice::convert_now(XrTime* time, proxXrTimeSource* source) {
+bool XrDevice::convert_now(XrTime* time, XrTimeSource* source) {
   XrResult r = XR_ERROR_FUNCTION_UNSUPPORTED;
 #if defined(_WIN32)
   if (!settings_.fn.convertWin32) return false;
   using Convert = XrResult(XRAPI_PTR*)(XrInstance, const LARGE_INTEGER*, XrTime*);
   LARGE_INTEGER counter;
   QueryPerformanceCounter(&counter);
-  r = reinterpret_cast<Convert>(settings_.fn.convertWin32)(settings_.def.instance, &counter, time);
-  *source = PROX_XR_TIME_WIN32_PERFORMANCE_COUNTER;
+  r = reinterpret_cast<Convert>(settings_.fn.convertWin32)(settings_.instance, &counter, time);
+  *source = XrTimeSource::Win32PerformanceCounter;
 #else
   if (!settings_.fn.convertTimespec) return false;
   timespec ts;
   clock_gettime(CLOCK_MONOTONIC, &ts);
-  r = settings_.fn.convertTimespec(settings_.def.instance, &ts, time);
-  *source = PROX_XR_TIME_TIMESPEC;
+  r = settings_.fn.convertTimespec(settings_.instance, &ts, time);
+  *source = XrTimeSource::Timespec;
 #endif
   if (XR_SUCCEEDED(r) && *time > 0) return true;
   if (XR_FAILED(r)) fail_result(r);
@@ -102,23 +116,23 @@ bool XrDevice::convert_now(XrTime* time, proxXrTimeSource* source) {
 // succeeded, or a time the app handed over). A runtime that has no time
 // to give, or stops giving it, costs no pose once it accepted one.
 bool XrDevice::now_xr(double clock, XrTime* time) {
-  proxXrTimeSource source = PROX_XR_TIME_NONE;
+  XrTimeSource source = XrTimeSource::None;
   *time = 0;
   if (!convert_now(time, &source)) {
-    source = PROX_XR_TIME_NONE;
+    source = XrTimeSource::None;
     const Frame f = frame_.load();
     const Anchor given = runtime_time_.load();
     const Anchor& own = given.clock > accepted_.clock ? given : accepted_;  // the newer news
     if (f.predicted > 0) {
       *time = f.predicted + ns(clock - f.clock);
-      source = PROX_XR_TIME_FRAMES;
+      source = XrTimeSource::Frames;
     } else if (own.time > 0) {
       *time = own.time + ns(clock - own.clock);
-      source = PROX_XR_TIME_OWN_CLOCK;
+      source = XrTimeSource::OwnClock;
     }
   }
   time_source_.store(source, std::memory_order_relaxed);
-  return source != PROX_XR_TIME_NONE && *time > 0;
+  return source != XrTimeSource::None && *time > 0;
 }
 
 bool XrDevice::locate(XrTime time, Located* out, bool with_velocity) {
@@ -128,7 +142,7 @@ bool XrDevice::locate(XrTime time, Located* out, bool with_velocity) {
   location.type = XR_TYPE_SPACE_LOCATION;
   if (with_velocity) location.next = &velocity;
   locates_.fetch_add(1, std::memory_order_relaxed);
-  const XrResult r = settings_.fn.locateSpace(settings_.poseSpace, settings_.def.baseSpace, time, &location);
+  const XrResult r = settings_.fn.locateSpace(settings_.pose_space, settings_.base_space, time, &location);
   out->valid = false;
   if (XR_FAILED(r)) {
     fail_result(r);
@@ -171,24 +185,24 @@ void XrDevice::push(const Located& grip, double ahead, double clock) {
   const double norm = glm::length(rotation);
   if (!(norm > 1e-6)) return;
   rotation /= norm;
-  const proxXrDeviceDef& d = settings_.def;
-  const glm::dquat base_q = quat(d.baseToWorld.rotation), tool_q = quat(d.toolInGrip.rotation);
-  const glm::dvec3 in_base = position + rotation * vec(d.toolInGrip.position);
-  const glm::dvec3 world = vec(d.baseToWorld.position) + base_q * in_base;
+  const XrSettings& d = settings_;
+  const glm::dquat base_q = quat(d.base_to_world), tool_q = quat(d.tool_in_grip);
+  const glm::dvec3 in_base = position + rotation * vec(d.tool_in_grip);
+  const glm::dvec3 world = vec(d.base_to_world) + base_q * in_base;
   const glm::dquat q = glm::normalize(base_q * rotation * tool_q);
-  const proxPose pose{{world.x, world.y, world.z}, {q.w, q.x, q.y, q.z}};
-  if (proxStreamDevice_PushPose(settings_.stream, &pose, clock) == PROX_SUCCESS)
-    pushed_.fetch_add(1, std::memory_order_relaxed);
+  const runtime::StreamSample sample{clock, {world.x, world.y, world.z}, {q.w, q.x, q.y, q.z}};
+  if (!finite(sample.position, 3) || !finite(sample.rotation, 4)) return;
+  if (stream_.push(sample)) pushed_.fetch_add(1, std::memory_order_relaxed);
 }
 
 void XrDevice::stop_vibration() {
   vibrating_ = false;
-  if (settings_.def.hapticAction == XR_NULL_HANDLE) return;
+  if (settings_.haptic_action == XR_NULL_HANDLE) return;
   XrHapticActionInfo info{};
   info.type = XR_TYPE_HAPTIC_ACTION_INFO;
-  info.action = settings_.def.hapticAction;
-  info.subactionPath = settings_.def.subactionPath;
-  const XrResult r = settings_.fn.stopHaptic(settings_.def.session, &info);
+  info.action = settings_.haptic_action;
+  info.subactionPath = settings_.subaction_path;
+  const XrResult r = settings_.fn.stopHaptic(settings_.session, &info);
   stops_.fetch_add(1, std::memory_order_relaxed);
   if (XR_FAILED(r) || r == XR_SESSION_NOT_FOCUSED) fail_result(r);
 }
@@ -197,28 +211,26 @@ void XrDevice::stop_vibration() {
 // most vibrationRate times a second, so one replaces the last before it
 // ends; stopped as soon as the force is gone.
 void XrDevice::vibrate(double clock) {
-  const proxXrDeviceDef& d = settings_.def;
-  if (d.hapticAction == XR_NULL_HANDLE) return;
-  proxWrench w{};
-  double force = 0.0;
-  if (proxStreamDevice_GetWrench(settings_.stream, &w) == PROX_SUCCESS)
-    force = std::sqrt(w.force.x * w.force.x + w.force.y * w.force.y + w.force.z * w.force.z);
+  const XrSettings& d = settings_;
+  if (d.haptic_action == XR_NULL_HANDLE) return;
+  const runtime::DeviceWrench w = stream_.wrench();
+  double force = std::sqrt(w.force[0] * w.force[0] + w.force[1] * w.force[1] + w.force[2] * w.force[2]);
   if (!std::isfinite(force)) force = 0.0;
-  const double amplitude = std::min(1.0, force / d.forceForFullAmplitude);
+  const double amplitude = std::min(1.0, force / d.force_for_full_amplitude);
   if (amplitude < 1e-3) {
     if (vibrating_) stop_vibration();
     return;
   }
-  if (clock - last_send_ < 1.0 / d.vibrationRate) return;
+  if (clock - last_send_ < 1.0 / d.vibration_rate) return;
   last_send_ = clock;
   XrHapticActionInfo info{};
   info.type = XR_TYPE_HAPTIC_ACTION_INFO;
-  info.action = d.hapticAction;
-  info.subactionPath = d.subactionPath;
+  info.action = d.haptic_action;
+  info.subactionPath = d.subaction_path;
   XrHapticVibration v{};
   v.type = XR_TYPE_HAPTIC_VIBRATION;
   v.amplitude = float(amplitude);
-  v.duration = XrDuration(std::llround(d.pulseDuration * 1e9));
+  v.duration = XrDuration(std::llround(d.pulse_duration * 1e9));
   v.frequency = XR_FREQUENCY_UNSPECIFIED;
   const XrResult r =
       settings_.fn.applyHaptic(d.session, &info, reinterpret_cast<const XrHapticBaseHeader*>(&v));
@@ -249,15 +261,15 @@ void XrDevice::tick() {
   bool tracked = now_xr(clock, &now);
   std::uint64_t version = 0;
   const Frame f = frame_.load(&version);
-  if (tracked && settings_.def.poseMode == PROX_XR_EXTRAPOLATE_FRAME && f.predicted > 0) {
+  if (tracked && settings_.pose_mode == XrPoseMode::ExtrapolateFrame && f.predicted > 0) {
     if (version != frame_seen_) {
       frame_seen_ = version;
       locate(f.predicted, &frame_grip_, true);
     }
     tracked = frame_grip_.valid;
     if (tracked) {
-      const double ahead = std::clamp(double(now - frame_grip_.time) * 1e-9, -settings_.def.maxExtrapolation,
-                                      settings_.def.maxExtrapolation);
+      const double ahead = std::clamp(double(now - frame_grip_.time) * 1e-9, -settings_.max_extrapolation,
+                                      settings_.max_extrapolation);
       push(frame_grip_, ahead, clock);
     }
   } else if (tracked) {
@@ -274,22 +286,21 @@ void XrDevice::tick() {
   vibrate(clock);
 }
 
-proxXrDeviceStats XrDevice::stats() const {
-  proxXrDeviceStats s{};
+XrStats XrDevice::stats() const {
+  XrStats s;
   s.ticks = ticks_.load(std::memory_order_relaxed);
   s.locates = locates_.load(std::memory_order_relaxed);
-  s.untrackedTicks = untracked_.load(std::memory_order_relaxed);
-  s.notFocusedTicks = not_focused_.load(std::memory_order_relaxed);
-  s.vibrationsSent = sent_.load(std::memory_order_relaxed);
-  s.vibrationsRefused = refused_.load(std::memory_order_relaxed);
-  s.stopsSent = stops_.load(std::memory_order_relaxed);
-  s.posesPushed = pushed_.load(std::memory_order_relaxed);
-  s.timeSource = time_source_.load(std::memory_order_relaxed);
-  s.timeFromFrames = s.timeSource == PROX_XR_TIME_FRAMES ? 1 : 0;
-  s.lastXrResult = last_result_.load(std::memory_order_relaxed);
-  s.lastAmplitude = last_amplitude_.load(std::memory_order_relaxed);
-  s.sessionState = state_.load(std::memory_order_relaxed);
+  s.untracked = untracked_.load(std::memory_order_relaxed);
+  s.not_focused = not_focused_.load(std::memory_order_relaxed);
+  s.vibrations_sent = sent_.load(std::memory_order_relaxed);
+  s.vibrations_refused = refused_.load(std::memory_order_relaxed);
+  s.stops_sent = stops_.load(std::memory_order_relaxed);
+  s.poses_pushed = pushed_.load(std::memory_order_relaxed);
+  s.time_source = time_source_.load(std::memory_order_relaxed);
+  s.last_result = last_result_.load(std::memory_order_relaxed);
+  s.last_amplitude = last_amplitude_.load(std::memory_order_relaxed);
+  s.session_state = state_.load(std::memory_order_relaxed);
   return s;
 }
 
-}  // namespace prox::xr
+}  // namespace prox::devices::xr

@@ -1,12 +1,12 @@
-// The OpenXR device through the C API (proxima_openxr.h). Each XR device
-// owns a streamed device of its world (the haptic loop's side, which lives
-// as long as the world, so a tool never reads a freed device) and a thread
-// that feeds it. Its ids live in a table of their own; calls on one device
-// are made from the game thread that created it.
+// The OpenXR device through the C API (proxima_openxr.h): checks the def,
+// resolves the OpenXR functions and makes the device
+// (devices/xr/xr_device.h), which lives in the device table as every device
+// does (device_table.h). Calls on one device come from the game thread that
+// created it, but for GetStats.
 #include "capi/common.h"
+#include "capi/device_table.h"
 
-#include "runtime/stream_device.h"
-#include "xr/xr_device.h"
+#include "devices/xr/xr_device.h"
 
 #include <proxima/proxima_openxr.h>
 
@@ -15,25 +15,20 @@ using namespace prox::capi;
 
 namespace {
 
-struct XrSlot {
-  std::uint32_t generation = 0;
-  std::unique_ptr<xr::XrDevice> device;
-  std::thread::id owner;
+using devices::xr::XrDevice;
+
+constexpr DeviceKind kXr = DeviceKind::Xr;
+
+// An XR device in use for the length of one call, from the thread that
+// created it (or any, for `game_thread` false).
+struct XrUse : DeviceUse {
+  explicit XrUse(const proxXrDeviceId& id, bool game_thread = true)
+      : DeviceUse(kXr, {id.index1, id.generation}, nullptr) {
+    if (game_thread && device().owner() != std::this_thread::get_id())
+      fail(PROX_ERROR_WRONG_THREAD, "called from a thread other than the one that created the XR device");
+  }
+  XrDevice& device() const { return as<XrDevice>(); }
 };
-
-std::mutex g_xr_mutex;  // the table's shape; GetStats may come from any thread
-std::vector<XrSlot> g_xr_slots;
-
-XrSlot& slot_of(proxXrDeviceId id, bool game_thread = true) {
-  if (id.index1 == 0) fail(PROX_ERROR_INVALID_HANDLE, "device is a null id");
-  if (id.index1 > g_xr_slots.size() || g_xr_slots[id.index1 - 1].generation != id.generation ||
-      !g_xr_slots[id.index1 - 1].device)
-    fail(PROX_ERROR_INVALID_HANDLE, "device does not name a live XR device (destroyed, or never created)");
-  XrSlot& s = g_xr_slots[id.index1 - 1];
-  if (game_thread && s.owner != std::this_thread::get_id())
-    fail(PROX_ERROR_WRONG_THREAD, "called from a thread other than the one that created the XR device");
-  return s;
-}
 
 template <typename Pfn>
 Pfn resolve(const proxXrDeviceDef& def, const char* name, bool required = true) {
@@ -77,7 +72,10 @@ void check_def(const proxXrDeviceDef& d) {
 }
 
 // The def's poses, normalised (the device thread composes them every tick).
-proxPose normalised(const proxPose& p, const char* name) { return to_c(to_pose(p, name)); }
+runtime::DevicePose normalised(const proxPose& p, const char* name) {
+  const proxPose n = to_c(to_pose(p, name));
+  return {{n.position.x, n.position.y, n.position.z}, {n.rotation.w, n.rotation.x, n.rotation.y, n.rotation.z}};
+}
 
 }  // namespace
 
@@ -106,10 +104,23 @@ proxResult proxWorld_CreateXrDevice(proxWorldId world, const proxXrDeviceDef* de
     world_of(world);
     need(def, "def");
     check_def(*def);
-    xr::XrSettings s;
-    s.def = *def;
-    s.def.toolInGrip = normalised(def->toolInGrip, "def->toolInGrip");
-    s.def.baseToWorld = normalised(def->baseToWorld, "def->baseToWorld");
+    devices::xr::XrSettings s;
+    s.instance = def->instance;
+    s.session = def->session;
+    s.base_space = def->baseSpace;
+    s.pose_action = def->poseAction;
+    s.haptic_action = def->hapticAction;
+    s.subaction_path = def->subactionPath;
+    s.tool_in_grip = normalised(def->toolInGrip, "def->toolInGrip");
+    s.base_to_world = normalised(def->baseToWorld, "def->baseToWorld");
+    s.pose_mode = enum_value(def->poseMode) == PROX_XR_EXTRAPOLATE_FRAME ? devices::xr::XrPoseMode::ExtrapolateFrame
+                                                                         : devices::xr::XrPoseMode::LocateEachTick;
+    s.vibration_rate = def->vibrationRate;
+    s.force_for_full_amplitude = def->forceForFullAmplitude;
+    s.pulse_duration = def->pulseDuration;
+    s.tick_rate = def->tickRate;
+    s.max_extrapolation = def->maxExtrapolation;
+    s.session_state = def->sessionState;
     s.fn.locateSpace = resolve<PFN_xrLocateSpace>(*def, "xrLocateSpace");
     s.fn.applyHaptic = resolve<PFN_xrApplyHapticFeedback>(*def, "xrApplyHapticFeedback");
     s.fn.stopHaptic = resolve<PFN_xrStopHapticFeedback>(*def, "xrStopHapticFeedback");
@@ -147,106 +158,94 @@ proxResult proxWorld_CreateXrDevice(proxWorldId world, const proxXrDeviceDef* de
              "XR_KHR_convert_timespec_time in xrCreateInstance, or leave def->timespecTime 0");
     }
 #endif
-    // Poses and vibrations go through a streamed device that holds the last
-    // pose (the device thread pushes one every tick).
-    proxStreamDeviceDef stream_def = proxDefaultStreamDeviceDef();
-    stream_def.mode = PROX_STREAM_HOLD;
-    stream_def.staleAfter = std::max(0.05, 20.0 / def->tickRate);
-    proxStreamDeviceId stream{};
-    if (const proxResult r = proxWorld_CreateStreamDevice(world, &stream_def, &stream); r != PROX_SUCCESS)
-      fail(r, g_last_error);
-    s.stream = stream;
-
     XrActionSpaceCreateInfo info{};
 
     info.type = XR_TYPE_ACTION_SPACE_CREATE_INFO;
     info.action = def->poseAction;
     info.subactionPath = def->subactionPath;
     info.poseInActionSpace.orientation.w = 1.0f;
-    const XrResult r = s.fn.createActionSpace(def->session, &info, &s.poseSpace);
+    const XrResult r = s.fn.createActionSpace(def->session, &info, &s.pose_space);
     if (XR_FAILED(r))
       fail(PROX_ERROR_INVALID_ARGUMENT, "xrCreateActionSpace for def->poseAction failed (XrResult " +
                                             std::to_string(int(r)) +
                                             "): are def->session and def->poseAction live, the action a "
                                             "POSE_INPUT and def->subactionPath one of its subaction paths?");
 
-    std::lock_guard<std::mutex> lock(g_xr_mutex);
-    std::size_t i = 0;
-    while (i < g_xr_slots.size() && g_xr_slots[i].device) ++i;
-    if (i == g_xr_slots.size()) g_xr_slots.emplace_back();
-    XrSlot& slot = g_xr_slots[i];
-    slot.generation += 1;
-    slot.owner = std::this_thread::get_id();
-    slot.device = std::make_unique<xr::XrDevice>(s);
-    if (def->runtimeTime > 0) slot.device->on_runtime_time(def->runtimeTime, runtime::stream_clock());
-    slot.device->start();
-    *device = {std::uint32_t(i + 1), slot.generation};
+    // From here on the device owns the space (and destroys it when closed).
+    auto made = std::make_shared<XrDevice>(s);
+    if (def->runtimeTime > 0) made->on_runtime_time(def->runtimeTime, runtime::stream_clock());
+    XrDevice& started = *made;
+    const DeviceSlot slot = add_device(world, kXr, std::move(made));
+    started.start();
+    *device = {slot.index1, slot.generation};
   });
 }
 
 proxResult proxXrDevice_OnSessionState(proxXrDeviceId device, XrSessionState state) {
   return guard("proxXrDevice_OnSessionState", [&] {
-    std::lock_guard<std::mutex> lock(g_xr_mutex);
-    XrSlot& s = slot_of(device);
+    const XrUse s(device);
     if (!valid_state(state)) fail(PROX_ERROR_INVALID_ARGUMENT, "state is not an XrSessionState");
-    s.device->on_session_state(state);
+    s.device().on_session_state(state);
   });
 }
 
 proxResult proxXrDevice_OnFrame(proxXrDeviceId device, XrTime predictedDisplayTime,
                                 XrDuration predictedDisplayPeriod) {
   return guard("proxXrDevice_OnFrame", [&] {
-    std::lock_guard<std::mutex> lock(g_xr_mutex);
-    XrSlot& s = slot_of(device);
+    const XrUse s(device);
     if (predictedDisplayTime <= 0) fail(PROX_ERROR_INVALID_ARGUMENT, "predictedDisplayTime must be > 0");
     if (predictedDisplayPeriod < 0) fail(PROX_ERROR_INVALID_ARGUMENT, "predictedDisplayPeriod must be >= 0");
-    s.device->on_frame(predictedDisplayTime, predictedDisplayPeriod, runtime::stream_clock());
+    s.device().on_frame(predictedDisplayTime, predictedDisplayPeriod, runtime::stream_clock());
   });
 }
 
 proxResult proxXrDevice_OnRuntimeTime(proxXrDeviceId device, XrTime time) {
   return guard("proxXrDevice_OnRuntimeTime", [&] {
-    std::lock_guard<std::mutex> lock(g_xr_mutex);
-    XrSlot& s = slot_of(device);
+    const XrUse s(device);
     if (time <= 0)
       fail(PROX_ERROR_INVALID_ARGUMENT,
            "time must be > 0: an XrTime the runtime gave (an event's time) or accepted (a locate's)");
-    s.device->on_runtime_time(time, runtime::stream_clock());
+    s.device().on_runtime_time(time, runtime::stream_clock());
   });
 }
 
 proxResult proxXrDevice_GetDeviceDef(proxXrDeviceId device, proxDeviceDef* def) {
   return guard("proxXrDevice_GetDeviceDef", [&] {
     need(def, "def");
-    proxStreamDeviceId stream;
-    {
-      std::lock_guard<std::mutex> lock(g_xr_mutex);
-      stream = slot_of(device).device->settings().stream;
-    }
-    if (const proxResult r = proxStreamDevice_GetDeviceDef(stream, def); r != PROX_SUCCESS)
-      fail(r, g_last_error);
+    *def = device_def(XrUse(device));
   });
 }
 
 proxResult proxXrDevice_GetStats(proxXrDeviceId device, proxXrDeviceStats* stats) {
   return guard("proxXrDevice_GetStats", [&] {
     need(stats, "stats");
-    std::lock_guard<std::mutex> lock(g_xr_mutex);
-    *stats = slot_of(device, false).device->stats();
+    const devices::xr::XrStats s = XrUse(device, false).device().stats();
+    *stats = proxXrDeviceStats{};
+    stats->ticks = s.ticks;
+    stats->locates = s.locates;
+    stats->untrackedTicks = s.untracked;
+    stats->notFocusedTicks = s.not_focused;
+    stats->vibrationsSent = s.vibrations_sent;
+    stats->vibrationsRefused = s.vibrations_refused;
+    stats->stopsSent = s.stops_sent;
+    stats->posesPushed = s.poses_pushed;
+    stats->timeSource = static_cast<proxXrTimeSource>(s.time_source);
+    stats->timeFromFrames = s.time_source == devices::xr::XrTimeSource::Frames ? 1 : 0;
+    stats->lastXrResult = s.last_result;
+    stats->lastAmplitude = s.last_amplitude;
+    stats->sessionState = s.session_state;
   });
 }
 
 proxResult proxXrDevice_Destroy(proxXrDeviceId device) {
   return guard("proxXrDevice_Destroy", [&] {
-    std::unique_ptr<xr::XrDevice> gone;
-    {
-      std::lock_guard<std::mutex> lock(g_xr_mutex);
-      gone = std::move(slot_of(device).device);
-    }
-    gone->stop();  // no OpenXR call from its thread after this
-    const xr::XrSettings& s = gone->settings();
-    s.fn.destroySpace(s.poseSpace);
+    { const XrUse use(device); }  // from the thread that made it
+    destroy_device(kXr, {device.index1, device.generation}, nullptr);
   });
+}
+
+proxBool proxXrDevice_IsValid(proxXrDeviceId device) {
+  return valid("proxXrDevice_IsValid", [&] { XrUse use(device, false); });
 }
 
 }  // extern "C"
