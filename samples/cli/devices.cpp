@@ -20,6 +20,10 @@ const char* profile_name(proxHidProfile p) {
       return "dualshock4";
     case PROX_HID_DUALSENSE:
       return "dualsense";
+    case PROX_HID_PID_JOYSTICK:
+      return "pid-joystick";
+    case PROX_HID_PID_WHEEL:
+      return "pid-wheel";
     default:
       return "none";
   }
@@ -65,7 +69,7 @@ struct HidRun {
   proxHidDeviceId id{};
   proxHidDeviceInfo info{};
   proxPose first{};
-  ~HidRun() { proxHidDevice_Close(id); }
+  ~HidRun() { proxHidDevice_Destroy(id); }
 };
 #else
 struct HidRun {};
@@ -162,6 +166,10 @@ void print_hid_stats(const HidRun& hid) {
       static_cast<unsigned long long>(s.reportsRead), static_cast<unsigned long long>(s.malformed),
       static_cast<unsigned long long>(s.outputsWritten), static_cast<unsigned long long>(s.failedWrites),
       static_cast<unsigned long long>(s.disconnects), static_cast<unsigned long long>(s.reconnects));
+  if (s.profile == PROX_HID_PID_JOYSTICK || s.profile == PROX_HID_PID_WHEEL)
+    std::printf("hid: force feedback: %llu effects created, %llu force updates, largest magnitude %.3f\n",
+                static_cast<unsigned long long>(s.effectsCreated), static_cast<unsigned long long>(s.forceUpdates),
+                s.maxForceMagnitude);
 }
 
 void hid_json(const HidRun& hid, Json& j) {
@@ -182,6 +190,9 @@ void hid_json(const HidRun& hid, Json& j) {
   j.key("disconnects").value(count(s.disconnects));
   j.key("reconnects").value(count(s.reconnects));
   j.key("connected").value(s.connected != 0);
+  j.key("force_updates").value(count(s.forceUpdates));
+  j.key("effects_created").value(count(s.effectsCreated));
+  j.key("max_force_magnitude").value(s.maxForceMagnitude);
   j.key("first_pose");
   pose_json(j, hid.first);
   j.key("last_pose");

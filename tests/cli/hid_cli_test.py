@@ -42,6 +42,23 @@ def puck(name, x=0, y=0, z=0):
     return (b"\x01" + le16(x) + le16(y) + le16(z) + bytes(6)).hex()
 
 
+# The force-feedback sticks: (vid:pid, the stick's report size and where
+# its X is, PROTOCOL.md's reset, stop-all and enable bytes, Block Load's id).
+PID = {
+    "openffboard": ("1209:ffb0", 25, 9, ["0c08", "0c08", "0c04", "0c01"], 0x12),
+    "arduino_ffb": ("2341:8036", 10, 2, ["0c04", "0c04", "0c03", "0c01"], 0x06),
+}
+
+
+def stick(name, x):
+    """The stick's input report 0x01 with X at x in [-1, 1] of its travel."""
+    _, size, at, _, _ = PID[name]
+    b = bytearray(size)
+    b[0] = 1
+    b[at:at + 2] = le16(round(x * 32767))
+    return b.hex()
+
+
 def left(name):
     """Full deflection towards -x (the default scene's A)."""
     return pad(name, lx=0) if name in ("ds4v2", "dualsense") else puck(name, x=-350)
@@ -132,6 +149,39 @@ class HidCliTest(unittest.TestCase):
                     self.assertEqual(record[0]["feature_requests"], [2])
                 else:
                     self.assertIn("0401", writes, "the LED lit in contact")
+
+    def test_run_drives_a_force_feedback_stick_into_contact(self):
+        # Position control: the stick at -0.55 of its travel (0.1 m at full
+        # deflection) puts the tool 5.5 cm towards A, within the 5 mm cutoff
+        # of it (the bunnies' closest points are not along x alone).
+        for name, (ids, _, _, opening, block_load) in PID.items():
+            with self.subTest(name):
+                out = os.path.join(self.dir.name, name + ".json")
+                r, record = self.emulate([name], [(0, 0, stick(name, -0.55))], "run", "--device", "hid:" + ids,
+                                         "--seconds", "1.0", "--hold", "0.5", "--json", out)
+                self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+                self.assertIn("device: HID pid-joystick", r.stdout)
+                self.assertIn("force feedback: 1 effects created", r.stdout)
+                with open(out) as f:
+                    report = json.load(f)
+                hid = report["hid"]
+                self.assertEqual(hid["profile"], "pid-joystick")
+                self.assertGreaterEqual(hid["reports_read"], 1)
+                self.assertEqual((hid["malformed"], hid["failed_writes"]), (0, 0))
+                self.assertEqual(hid["effects_created"], 1)
+                self.assertGreater(hid["force_updates"], 0)
+                self.assertGreater(hid["max_force_magnitude"], 0.0, "the contact was pushed back")
+                self.assertLessEqual(hid["max_force_magnitude"], 1.0)
+                first, last = hid["first_pose"], hid["last_pose"]
+                self.assertAlmostEqual(last[0], first[0] - 0.055, delta=1e-4)
+                self.assertGreater(report["device"]["max_force"], 0.0)
+                writes = record[0]["writes"]
+                self.assertEqual(writes[:4], opening)
+                self.assertIn(block_load, record[0]["feature_requests"])
+                forces = [w for w in writes if w.startswith("0501") and len(w) == 8]
+                self.assertTrue(any(w != "05010000" for w in forces), "a constant force was sent")
+                # Closed at the end: the effect stopped and freed, everything stopped.
+                self.assertEqual(writes[-4:-1], ["0a010301", "0b01", opening[2]])
 
     def test_run_refuses_what_is_not_there(self):
         r, _ = self.emulate(["ds4v2"], [], "run", "--device", "hid:256f:c62e", "--seconds", "0.1")

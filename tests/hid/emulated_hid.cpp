@@ -72,6 +72,14 @@ EmulatedHidSpec shared_device(const std::string& dir, const std::string& name) {
                          540, 540, 8200, -8100, 8300,  -8000, 8150,  -8250};
     for (int i = 0; i < 17; ++i) put16(cal, std::size_t(1 + 2 * i), words[i]);
     s.features[cal[0]] = cal;
+  } else if (name == "openffboard" || name == "openffboard_1axis") {
+    s.vendor_id = 0x1209, s.product_id = 0xffb0, s.interface_number = 0, s.bcd_device = 0x0100;
+    s.manufacturer = "Open FFBoard", s.product = "FFBoard";
+    file = name == "openffboard" ? "pid/openffboard_1209_ffb0" : "pid/openffboard_1209_ffb0_1axis";
+  } else if (name == "arduino_ffb") {
+    s.vendor_id = 0x2341, s.product_id = 0x8036, s.interface_number = 2, s.bcd_device = 0x0100;
+    s.manufacturer = "Arduino LLC", s.product = "Arduino Leonardo";
+    file = "pid/arduino_joystick_ffb_2341_8036";
   } else {
     ADD_FAILURE() << "no shared device named " << name;
     return s;
@@ -240,6 +248,7 @@ gboolean EmulatedHidBus::Impl::on_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient*
     }
     case 0x06: {  // HIDIOCSFEATURE
       d.features_sent.push_back(fetch(arg, size));
+      if (s.on_set_feature) s.on_set_feature(d.features_sent.back());
       umockdev_ioctl_client_complete(client, long(size), 0);
       return TRUE;
     }
@@ -250,6 +259,12 @@ gboolean EmulatedHidBus::Impl::on_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient*
         return TRUE;
       }
       d.feature_requests.push_back(asked[0]);
+      Bytes reply;
+      if (s.on_get_feature && s.on_get_feature(asked[0], reply)) {
+        const std::size_t n = std::min(reply.size(), size);
+        umockdev_ioctl_client_complete(client, fill(arg, size, reply.data(), n) ? long(n) : -1, EFAULT);
+        return TRUE;
+      }
       const auto it = s.features.find(asked[0]);
       if (it == s.features.end()) {
         umockdev_ioctl_client_complete(client, -1,
@@ -299,6 +314,7 @@ gboolean EmulatedHidBus::Impl::on_write(UMockdevIoctlBase*, UMockdevIoctlClient*
     return TRUE;
   }
   d.writes.emplace_back(arg->data, arg->data + arg->data_len);
+  if (d.spec.on_output) d.spec.on_output(d.writes.back());
   d.write_times.push_back(
       std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
   const long n = arg->data_len;

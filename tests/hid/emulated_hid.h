@@ -11,6 +11,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -28,10 +29,19 @@ struct EmulatedHidSpec {
   std::string manufacturer, product, serial;
   Bytes descriptor;                        // the real report descriptor
   std::map<std::uint8_t, Bytes> features;  // get-feature replies by report id (byte 0 = id)
+  // A device with a model of its own behind its reports (a PID device's
+  // effect blocks, emulated_pid.h), called under the bus's lock: each
+  // set-feature report; each get-feature request by id, filling the reply
+  // (false: not this model's, `features` answers); each output report.
+  std::function<void(const Bytes& report)> on_set_feature;
+  std::function<bool(std::uint8_t id, Bytes& reply)> on_get_feature;
+  std::function<void(const Bytes& report)> on_output;
 };
 
 // The devices of ../shared/devices, by name: "spacenavigator",
-// "spacemouse_wireless", "ds4v2", "dualsense". `devices_dir` holds the
+// "spacemouse_wireless", "ds4v2", "dualsense", and the force-feedback ones
+// of its pid/ folder, "openffboard", "openffboard_1axis", "arduino_ffb"
+// (their PID model is emulated_pid.h's to attach). `devices_dir` holds the
 // .rdesc.bin files. Fails the calling test when one is missing.
 EmulatedHidSpec shared_device(const std::string& devices_dir, const std::string& name);
 

@@ -6,8 +6,9 @@
 
 _Static_assert(sizeof(proxHidDeviceInfo) == 464, "2 + 2 + 4 + 4 + 2 + 2 + 128 + 64 + 256");
 _Static_assert(sizeof(proxHidDeviceId) == 16, "proxHidDeviceId");
-_Static_assert(sizeof(proxHidDeviceDef) == 192, "8 + 4 (+4) + 56 + 24 + 4 * 8 + 32 + 3 * 8 + 8");
-_Static_assert(sizeof(proxHidDeviceStats) == 80, "4 + 4 + 8 * 8 + 8");
+_Static_assert(sizeof(proxHidDeviceDef) == 216, "8 + 4 (+4) + 56 + 24 + 4 * 8 + 32 + 3 * 8 + 2 * 8 + 2 * 4 + 8");
+_Static_assert(sizeof(proxHidDeviceStats) == 120, "4 + 4 + 8 * 8 + 8 + 2 * 8 + 2 * 8 + 4 + 4");
+_Static_assert(sizeof(proxHidForceEffect) == 4, "proxHidForceEffect");
 _Static_assert(sizeof(proxHidProfile) == 4, "proxHidProfile");
 
 int main(void) {
@@ -18,7 +19,8 @@ int main(void) {
     return 1;
   }
   const proxHidDeviceDef def = proxDefaultHidDeviceDef();
-  if (def.outputRate != 250.0 || def.deviceToWorld.w != 1.0) return 1;
+  if (def.outputRate != 250.0 || def.deviceToWorld.w != 1.0 || def.maxForce != 5.0 || def.workspace != 0.0)
+    return 1;
   printf("%d supported HID devices present\n", (int)count);
   return count >= 0 ? 0 : 1;
 }

@@ -4,13 +4,16 @@
 //   proxima_hid_emulate [--device NAME]... [--send DEVICE SECONDS HEX]... [--record FILE] -- COMMAND...
 //
 // NAME is one of the shared devices (spacenavigator, spacemouse_wireless,
-// ds4v2, dualsense), plugged in as /dev/hidraw0, 1, ... in order. Each
+// ds4v2, dualsense; the force-feedback openffboard, openffboard_1axis and
+// arduino_ffb, their effect blocks modelled by emulated_pid.h), plugged in
+// as /dev/hidraw0, 1, ... in order. Each
 // --send queues an input report (hex bytes, report id first) on device
 // DEVICE: the first one at once, each later one SECONDS after the device's
 // first report was read (that is, after the command opened it). --record
 // writes, as JSON, what each device was written and which feature reports
 // were asked for. Exits with the command's status.
 #include "hid/emulated_hid.h"
+#include "hid/emulated_pid.h"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -84,7 +87,13 @@ int main(int argc, char** argv) {
   }
   if (i + 1 >= argc) usage("no command after --");
   prox::test::EmulatedHidBus bus(false);
-  for (const std::string& n : names) bus.add(prox::test::shared_device(PROX_SHARED_DEVICES_DIR, n));
+  std::vector<std::shared_ptr<prox::test::EmulatedPid>> models;
+  for (const std::string& n : names) {
+    prox::test::EmulatedHidSpec spec = prox::test::shared_device(PROX_SHARED_DEVICES_DIR, n);
+    if (n == "openffboard" || n == "openffboard_1axis" || n == "arduino_ffb")
+      models.push_back(prox::test::EmulatedPid::attach(spec, n == "arduino_ffb" ? 14 : 40));
+    bus.add(spec);
+  }
   for (const Send& s : sends)
     if (s.device < 0 || s.device >= int(names.size())) usage("--send names a device not plugged in");
 

@@ -92,6 +92,14 @@ TEST(HidPid, OpenFfBoardIsATwoAxisJoystickWithSixteenBitDirectionsAndAMaskedCont
   EXPECT_EQ(at(p.load_ram_available), "3.0");
   EXPECT_EQ(p.pool_ram_size.report_id, 0x13);
   EXPECT_EQ(at(p.pool_max_effects), "3.0");
+  // The stick: gamepad report 0x01 (25 bytes), X at 9 and Y at 11, int16.
+  EXPECT_EQ(p.position[0].report_id, 0x01);
+  EXPECT_EQ(p.position[0].report_bytes, 25u);
+  EXPECT_EQ(at(p.position[0]), "9.0");
+  EXPECT_EQ(at(p.position[1]), "11.0");
+  EXPECT_EQ(p.position[0].bits, 16u);
+  EXPECT_EQ(p.position[0].min, -32767);
+  EXPECT_EQ(p.position[0].max, 32767);
 }
 
 TEST(HidPid, TheArduinoLibraryHasEightBitDirectionsAnIndexedControlAndTenThousandSteps) {
@@ -116,6 +124,10 @@ TEST(HidPid, TheArduinoLibraryHasEightBitDirectionsAnIndexedControlAndTenThousan
   EXPECT_EQ(p.create_type.report_id, 0x05);
   EXPECT_EQ(p.load_block.report_id, 0x06);
   EXPECT_EQ(p.pool_ram_size.report_id, 0x07);
+  // The stick: gamepad report 0x01 (10 bytes), X at 2 and Y at 4.
+  EXPECT_EQ(p.position[0].report_bytes, 10u);
+  EXPECT_EQ(at(p.position[0]), "2.0");
+  EXPECT_EQ(at(p.position[1]), "4.0");
 }
 
 TEST(HidPid, TheOneAxisBuildIsAWheel) {

@@ -6,7 +6,11 @@
  * the tool's pose; the haptic loop reads that pose through a lock-free
  * handoff and hands back the rendered wrench, which the same device thread
  * turns into rumble, the DualSense's trigger resistance and the light bar,
- * rate-limited. Present when the library was built with PROX_WITH_HIDAPI. */
+ * rate-limited. Force-feedback joysticks and wheel bases (USB HID PID, as
+ * OpenFFBoard and the Arduino Joystick-with-FFB library speak it) push back:
+ * their position is the tool's, inside a workspace, and the wrench becomes
+ * a constant-force effect. Present when the library was built with
+ * PROX_WITH_HIDAPI. */
 #ifndef PROXIMA_HID_H
 #define PROXIMA_HID_H
 
@@ -24,6 +28,9 @@ typedef enum proxHidProfile {
   PROX_HID_SPACEMOUSE_COMBINED = 2, /* SpaceMouse Wireless and newer: report 1 with all six axes */
   PROX_HID_DUALSHOCK4 = 3,          /* Sony DualShock 4 (USB) */
   PROX_HID_DUALSENSE = 4,           /* Sony DualSense (USB) */
+  /* HID PID force feedback, recognised from the report descriptor: */
+  PROX_HID_PID_JOYSTICK = 5, /* two force axes (a stick) */
+  PROX_HID_PID_WHEEL = 6,    /* one force axis (a wheel base) */
   PROX_HID_PROFILE_FORCE32 = 0x7FFFFFFF
 } proxHidProfile;
 
@@ -63,12 +70,36 @@ typedef struct proxHidDeviceDef {
       deviceToWorld;   /* rotates the device's frame (x right, y up, z towards the user) into the world's */
   double rumbleForce;  /* N, > 0: the force at which rumble is full (default 3) */
   double triggerForce; /* N, > 0: the force at which the DualSense trigger's resistance is full (default 3) */
-  double outputRate;   /* Hz, (0, 250]: the most output reports a second (default 250) */
+  double outputRate;   /* Hz, (0, 250]: the most output reports a second (default 250; a PID device
+                          sends at most one report a millisecond, whatever this says) */
+  /* Force-feedback (PID) devices. Position control: the tool's travel at
+   * full deflection about initialPose along the device frame's x (the stick's
+   * X, right) and z (its Y, towards the user), in m; for a wheel, its turn
+   * about the device frame's z, in rad. 0 (default): 0.1 m, or 1 rad. */
+  double workspace;
+  /* N (N m for a wheel) at full magnitude, > 0 (default 5): the magnitude a
+   * PID device takes is a fraction of what the device is set to. */
+  double maxForce;
+  /* The sign of the force on each device axis (x, then y): 1 as DirectInput
+   * pushes, -1 the other way, 0 (default) the firmware's known convention
+   * (the Arduino library's is -1, every other +1). */
+  int32_t forceSign[2];
   int32_t internalValue;
   int32_t reserved;
 } proxHidDeviceDef;
 
 PROX_API proxHidDeviceDef proxDefaultHidDeviceDef(void);
+
+/* Where a PID device's constant-force effect is. */
+typedef enum proxHidForceEffect {
+  PROX_HID_EFFECT_NONE = 0,      /* not a PID device, or not created yet */
+  PROX_HID_EFFECT_PLAYING = 1,   /* created, started and renewed */
+  PROX_HID_EFFECT_FULL = 2,      /* the device had no free effect block: input only */
+  PROX_HID_EFFECT_ERROR = 3,     /* the device could not create it: input only */
+  PROX_HID_EFFECT_NO_ANSWER = 4, /* Block Load never answered: input only */
+  PROX_HID_EFFECT_STOPPED = 5,   /* stopped and freed (closed, or unplugged) */
+  PROX_HID_EFFECT_FORCE32 = 0x7FFFFFFF
+} proxHidForceEffect;
 
 /* What a HID device did. Counts since it was opened. */
 typedef struct proxHidDeviceStats {
@@ -83,6 +114,13 @@ typedef struct proxHidDeviceStats {
   uint64_t poseReads;      /* haptic ticks that asked for the pose */
   uint64_t noPoseTicks;    /* ... and got none (disconnected or closed) */
   double lastReportAge;    /* s since the last input report (-1 before the first) */
+  /* PID devices: */
+  uint64_t forceUpdates;     /* Set Constant Force reports written */
+  uint64_t effectsCreated;   /* constant-force effects created (one more at each reconnection) */
+  double lastForceMagnitude; /* the last magnitude sent, a fraction of maxForce in [-1, 1] */
+  double maxForceMagnitude;  /* the largest |magnitude| sent, in [0, 1] */
+  proxHidForceEffect forceEffect;
+  int32_t reserved;
 } proxHidDeviceStats;
 
 /* Opens a device and starts its thread (reads, integrates, writes outputs).

@@ -79,6 +79,8 @@ proxHidDeviceDef proxDefaultHidDeviceDef(void) {
   d.rumbleForce = s.output.rumble_force;
   d.triggerForce = s.output.trigger_force;
   d.outputRate = s.output_rate;
+  d.workspace = s.workspace;
+  d.maxForce = s.max_force;
   d.internalValue = kDefCookie;
   return d;
 }
@@ -119,6 +121,16 @@ proxResult proxWorld_OpenHidDevice(proxWorldId world, const proxHidDeviceDef* de
     s.output.rumble_force = def->rumbleForce;
     s.output.trigger_force = def->triggerForce;
     s.output_rate = def->outputRate;
+    need_range(def->workspace, 0.0, 100.0, "def->workspace");
+    need_positive(def->maxForce, "def->maxForce");
+    for (int k = 0; k < 2; ++k) {
+      if (def->forceSign[k] < -1 || def->forceSign[k] > 1)
+        fail(PROX_ERROR_INVALID_ARGUMENT, "def->forceSign[" + std::to_string(k) + "] must be -1, 0 or 1 (it is " +
+                                              std::to_string(def->forceSign[k]) + ")");
+      s.force_sign[k] = def->forceSign[k];
+    }
+    s.workspace = def->workspace;
+    s.max_force = def->maxForce;
     std::string error;
     std::unique_ptr<devices::HidDevice> d = devices::HidDevice::open(s, &error);
     if (!d) fail(PROX_ERROR_FILE, error);
@@ -152,6 +164,11 @@ proxResult proxHidDevice_GetStats(proxHidDeviceId device, proxHidDeviceStats* st
     stats->poseReads = s.pose_reads;
     stats->noPoseTicks = s.no_pose_ticks;
     stats->lastReportAge = s.last_report_age;
+    stats->forceUpdates = s.force_updates;
+    stats->effectsCreated = s.effects_created;
+    stats->lastForceMagnitude = s.last_force_magnitude;
+    stats->maxForceMagnitude = s.max_force_magnitude;
+    stats->forceEffect = static_cast<proxHidForceEffect>(s.effect);
   });
 }
 

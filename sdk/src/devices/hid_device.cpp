@@ -2,6 +2,7 @@
 
 #include <hidapi.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cwchar>
@@ -52,9 +53,16 @@ std::vector<HidFound> enumerate_locked() {
   if (!hidapi_ready()) return out;
   hid_device_info* list = hid_enumerate(0, 0);
   for (const hid_device_info* i = list; i; i = i->next) {
-    const HidProfile p = hid_profile_of(
+    HidProfile p = hid_profile_of(
         i->vendor_id, i->product_id, i->usage_page, i->usage,
         i->bus_type == HID_API_BUS_USB || i->bus_type == HID_API_BUS_UNKNOWN ? i->interface_number : -1);
+    // A joystick or gamepad collection of no known device: a force-feedback
+    // device when its descriptor has the PID reports (read once a node: a
+    // PID descriptor has many top-level collections, each listed).
+    if (p == HidProfile::None && i->path && i->usage_page == 0x01 && (i->usage == 0x04 || i->usage == 0x05)) {
+      const bool seen = std::any_of(out.begin(), out.end(), [&](const HidFound& f) { return f.path == i->path; });
+      if (!seen) p = pid_profile_of(i->path);
+    }
     if (p == HidProfile::None || !i->path) continue;
     HidFound f;
     f.vendor_id = i->vendor_id, f.product_id = i->product_id, f.profile = p;
@@ -114,8 +122,10 @@ std::unique_ptr<HidDevice> HidDevice::open(const HidDeviceSettings& settings, st
 HidDevice::HidDevice(const HidDeviceSettings& settings, const HidFound& found, hid_device_* handle)
     : settings_(settings), found_(found), handle_(handle) {
   motion_.reset(settings_.initial_position, settings_.initial_rotation, settings_.reference_local);
+  home_ = motion_;
   last_output_ = build_output(found_.profile, 0.0, settings_.output);  // the device starts at rest
   read_calibration();
+  if (is_pid(found_.profile)) pid_open();
   connected_.store(true);
   publish(true);
   last_step_ = now_seconds();
@@ -128,6 +138,7 @@ void HidDevice::close() {
   if (closed_.exchange(true, std::memory_order_acq_rel)) return;
   stop_.store(true);
   if (thread_.joinable()) thread_.join();
+  pid_stop();  // the effect stopped and freed, the actuators off
   if (handle_) hid_close(handle_);
   handle_ = nullptr;
   connected_.store(false);
@@ -150,6 +161,10 @@ void HidDevice::publish(bool valid) {
 }
 
 void HidDevice::disconnect() {
+  if (pid_) {
+    pid_->lost();
+    effect_state_.store(pid_->state(), std::memory_order_relaxed);
+  }
   hid_close(handle_);
   handle_ = nullptr;
   connected_.store(false);
@@ -158,6 +173,7 @@ void HidDevice::disconnect() {
   input_ = HidInput{};
   axes_ = HidAxes{};
   recentre_held_ = false;
+  if (pid_) motion_ = home_;  // a stick's position is read anew
   publish(false);
 }
 
@@ -176,6 +192,7 @@ bool HidDevice::reopen() {
 
 void HidDevice::run() {
   std::uint8_t buf[256];
+  pid_start(now_seconds());
   while (!stop_.load(std::memory_order_acquire)) {
     if (!handle_) {
       const double now = now_seconds();
@@ -184,6 +201,7 @@ void HidDevice::run() {
         if (reopen()) {
           read_calibration();
           last_output_ = build_output(found_.profile, 0.0, settings_.output);
+          pid_start(now);  // a reconnected device's effects are gone: created anew
           reconnects_.fetch_add(1, std::memory_order_relaxed);
           connected_.store(true);
           last_step_ = now_seconds();
@@ -202,11 +220,13 @@ void HidDevice::run() {
       next_search_ = now + settings_.reconnect_interval;
       continue;
     }
-    // The deflection held since the last step moved the tool until now.
-    motion_.step(axes_, settings_.motion, now - last_step_);
+    // The deflection held since the last step moved the tool until now (a
+    // rate device; a grounded one is where its last report put it).
+    if (!pid_) motion_.step(axes_, settings_.motion, now - last_step_);
     last_step_ = now;
     if (n > 0) {
-      const DecodeResult r = decode_hid_report(found_.profile, buf, std::size_t(n), calibration_, input_);
+      const DecodeResult r = pid_ ? pid_input(buf, std::size_t(n))
+                                  : decode_hid_report(found_.profile, buf, std::size_t(n), calibration_, input_);
       if (r == DecodeResult::Malformed) {
         malformed_.fetch_add(1, std::memory_order_relaxed);
       } else {
@@ -224,6 +244,10 @@ void HidDevice::run() {
 }
 
 void HidDevice::write_outputs(double now) {
+  if (pid_) {
+    pid_outputs(now);
+    return;
+  }
   if (now - last_output_time_ < 1.0 / settings_.output_rate) return;
   const runtime::DeviceWrench w = wrench_.load();
   OutputInput in;
@@ -270,6 +294,11 @@ HidStats HidDevice::stats() const {
   s.no_pose_ticks = no_pose_ticks_.load(std::memory_order_relaxed);
   const double t = last_report_time_.load(std::memory_order_relaxed);
   s.last_report_age = t < 0.0 ? -1.0 : now_seconds() - t;
+  s.force_updates = force_updates_.load(std::memory_order_relaxed);
+  s.effects_created = effects_created_.load(std::memory_order_relaxed);
+  s.last_force_magnitude = last_force_magnitude_.load(std::memory_order_relaxed);
+  s.max_force_magnitude = max_force_magnitude_.load(std::memory_order_relaxed);
+  s.effect = effect_state_.load(std::memory_order_relaxed);
   return s;
 }
 

@@ -46,6 +46,20 @@ void ToolMotion::step(const HidAxes& axes, const MotionSettings& s, double secon
   }
 }
 
+void ToolMotion::place(const ToolMotion& home, const MotionSettings& s, const double offset[3],
+                       const double axis[3], double angle) {
+  *this = home;
+  const glm::dquat to_world = quat(s.device_to_world);
+  const glm::dvec3 d = to_world * glm::dvec3(offset[0], offset[1], offset[2]);
+  for (int i = 0; i < 3; ++i) reference[i] += d[i];
+  const glm::dvec3 a(axis[0], axis[1], axis[2]);
+  if (angle != 0.0 && glm::length(a) > 0.0) {
+    const glm::dvec3 w = glm::normalize(to_world * a);
+    const glm::dquat turn(std::cos(angle / 2), w * std::sin(angle / 2));
+    store(turn * quat(home.rotation), rotation);
+  }
+}
+
 void ToolMotion::pose(double position[3], double rotation_out[4]) const {
   const glm::dvec3 r =
       quat(rotation) * glm::dvec3(reference_local[0], reference_local[1], reference_local[2]);

@@ -32,6 +32,12 @@ struct ToolMotion {
   void reset(const double position[3], const double rotation[4], const double reference_local[3]);
   // Moves `seconds` at the velocities the axes give.
   void step(const HidAxes& axes, const MotionSettings& settings, double seconds);
+  // Position control (a grounded stick or wheel: its position is the
+  // hand's): the tool at `home` with its reference point moved by `offset`
+  // and turned by `angle` (rad) about `axis` through it, both in the
+  // device's frame (settings.device_to_world takes them to the world's).
+  void place(const ToolMotion& home, const MotionSettings& settings, const double offset[3], const double axis[3],
+             double angle);
   // The tool's pose: position of its frame's origin, and rotation.
   void pose(double position[3], double rotation[4]) const;
 };

@@ -90,6 +90,8 @@ OutputReport build_output(HidProfile profile, const OutputInput& in, const Outpu
       r.bytes[0] = 0x04;
       r.bytes[1] = rumble > 0 ? 1 : 0;
       break;
+    case HidProfile::PidJoystick:  // a force effect (hid_pid_effect.h), not these outputs
+    case HidProfile::PidWheel:
     case HidProfile::None:
       break;
   }

@@ -155,6 +155,18 @@ Status pid_layout_of(const HidDescriptor& d, PidLayout& out) {
   p.pool_ram_size = feature_value(kPoolReport, pid(kRamPoolSize));
   p.pool_max_effects = feature_value(kPoolReport, pid(kSimultaneousMax));
 
+  // The stick's (or wheel's) position: the first input fields that are GD X
+  // and Y, variable, in one report.
+  for (const HidField& f : d.fields) {
+    if (f.kind != HidReportKind::Input || f.constant() || !f.variable()) continue;
+    for (std::size_t k = 0; k < f.usages.size() && k < f.count; ++k) {
+      const int axis = f.usages[k] == kGdX ? 0 : f.usages[k] == kGdY ? 1 : -1;
+      if (axis < 0 || p.position[axis].present) continue;
+      if (axis == 1 && p.position[0].present && p.position[0].report_id != f.report_id) continue;
+      p.position[axis] = slot_of(d, f, f.bit + std::uint32_t(k) * f.size, f.size);
+    }
+  }
+
   // What a constant force cannot do without.
   struct Need {
     const PidSlot& slot;
@@ -173,6 +185,7 @@ Status pid_layout_of(const HidDescriptor& d, PidLayout& out) {
       {p.create_type, "Create New Effect feature report with ET Constant Force"},
       {p.load_block, "PID Block Load feature report's Effect Block Index"},
       {p.load_status, "PID Block Load feature report's Block Load Status"},
+      {p.position[0], "input report with the stick's position (Generic Desktop X)"},
   };
   for (const Need& n : needs)
     if (!n.slot.present) return missing(n.name);

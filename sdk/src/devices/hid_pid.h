@@ -49,6 +49,9 @@ struct PidLayout {
   PidSlot load_block, load_status, load_ram_available;  // PID Block Load (the host gets it)
   std::int32_t load_success = 0, load_full = 0, load_error = 0;
   PidSlot pool_ram_size, pool_max_effects;  // PID Pool (the host gets it)
+  // Input: where the stick is (Generic Desktop X and Y of the first input
+  // report that has them; a wheel has X only). Its position is the hand's.
+  PidSlot position[2];
 };
 
 // The layout of a parsed descriptor. A descriptor without PID reports gives

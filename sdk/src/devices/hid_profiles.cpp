@@ -79,6 +79,10 @@ const char* hid_profile_name(HidProfile profile) {
       return "dualshock4";
     case HidProfile::DualSense:
       return "dualsense";
+    case HidProfile::PidJoystick:
+      return "pid-joystick";
+    case HidProfile::PidWheel:
+      return "pid-wheel";
     case HidProfile::None:
       break;
   }
@@ -171,6 +175,8 @@ DecodeResult decode_hid_report(HidProfile profile, const std::uint8_t* d, std::s
       s.battery = std::min((d[53] & 0x0f) * 10 + 5, 100);
       calibrate(calibration, s);
       return DecodeResult::Decoded;
+    case HidProfile::PidJoystick:  // decoded from their descriptor (hid_device.cpp)
+    case HidProfile::PidWheel:
     case HidProfile::None:
       break;
   }

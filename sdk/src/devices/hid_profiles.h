@@ -15,8 +15,14 @@ enum class HidProfile {
   SpaceMouseSplit = 1,
   SpaceMouseCombined = 2,
   DualShock4 = 3,
-  DualSense = 4
+  DualSense = 4,
+  // Grounded force feedback over HID PID (hid_pid.h), recognised from the
+  // descriptor: two force axes, or one.
+  PidJoystick = 5,
+  PidWheel = 6
 };
+
+inline bool is_pid(HidProfile p) { return p == HidProfile::PidJoystick || p == HidProfile::PidWheel; }
 
 struct KnownHidDevice {
   std::uint16_t vendor_id, product_id;

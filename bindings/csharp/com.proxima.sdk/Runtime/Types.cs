@@ -46,7 +46,7 @@ namespace Proxima
         public Version(int major, int minor, int patch) { Major = major; Minor = minor; Patch = patch; }
 
         /// <summary>The C API version this binding was written against.</summary>
-        public static Version Binding => new Version(0, 3, 0);
+        public static Version Binding => new Version(0, 4, 0);
 
         /// <summary>The version of the native library actually loaded.</summary>
         public static Version Library
