@@ -4,7 +4,7 @@ the assembly definitions, a .meta with a unique GUID for every file and
 folder (Unity ignores an immutable package's assets that lack one), the
 native plugin's platform settings, that the package, the C# binding and
 the C library carry one version, and that the binding declares every
-function of proxima.h. Prints "N passed, N failed".
+function of proxima.h, proxima_hid.h and proxima_openxr.h. Prints "N passed, N failed".
 
     check_package.py REPOSITORY_ROOT
 """
@@ -44,15 +44,20 @@ def main():
           "Version.Binding in Types.cs is the C library's " + c_version)
     check(manifest.get("version") == c_version, "package.json: version is the C library's " + c_version)
 
-    # Every public C function has its P/Invoke declaration (Native.cs).
-    # proxima.h and the parts it includes (the HID and OpenXR headers are not bound yet).
+    # Every public C function has its P/Invoke declaration (generated into
+    # Runtime/Generated/ by gen_native.py; this check reads the headers and
+    # the C# on its own): proxima.h, the parts it includes, proxima_hid.h and
+    # proxima_openxr.h.
     api = "".join(open(os.path.join(root, "sdk", "include", "proxima", h)).read()
-                  for h in ("proxima.h", "devices.h", "threads.h", "inspect.h"))
+                  for h in ("proxima.h", "devices.h", "threads.h", "inspect.h", "proxima_hid.h", "proxima_openxr.h"))
     c_functions = set(re.findall(r"^PROX_API\s[^;]*?\b(prox\w+)\s*\(", api, re.M | re.S))
-    native = open(os.path.join(pkg, "Runtime", "Native.cs")).read()
-    declared = set(re.findall(r"static extern \w+ (prox\w+)\(", native))
+    generated = os.path.join(pkg, "Runtime", "Generated")
+    native = "".join(open(os.path.join(generated, n)).read() for n in sorted(os.listdir(generated))
+                     if n.endswith(".cs"))
+    native += open(os.path.join(pkg, "Runtime", "Native.cs")).read()
+    declared = set(re.findall(r"static extern [\w\[\]]+ (prox\w+)\(", native))
     declared |= set(re.findall(r'EntryPoint = "(prox\w+)"', native))
-    check(len(c_functions) > 40, "proxima.h's functions were found (%d)" % len(c_functions))
+    check(len(c_functions) > 90, "the headers' functions were found (%d)" % len(c_functions))
     for f in sorted(c_functions):
         check(f in declared, "Native.cs declares " + f)
 

@@ -14,8 +14,8 @@ A thin layer over the C API (proxima.h, loaded with cffi); docs/python.md.
 from ._core import (Busy, CapacityError, Error, FileError, InternalError, InvalidArgument, InvalidHandle,
                     InvalidMesh, ParseError, Unsupported, VersionMismatch, WrongThread, c_dtype,
                     version_string)
-from ._devices import ScriptedDevice, StreamDevice, get_time
-from ._types import (Animation, ForceSettings, IntersectionStats, MeshInfo, MeshStats, PatchSettings, PatchStats,
+from ._devices import HidDevice, ScriptedDevice, StreamDevice, enumerate_hid_devices, get_time
+from ._types import (Animation, ForceSettings, HidDeviceInfo, HidDeviceStats, IntersectionStats, MeshInfo, MeshStats, PatchSettings, PatchStats,
                      RigInfo, SafetyStats, ScriptedDeviceRecord, Skin, SearchStats, StreamDeviceStats, ThreadStats,
                      TrackStats, WorldStats, contact_dtype)
 from ._trace import FLAGS as HAPTIC_FLAGS, has_flag, trace_dtype
@@ -26,7 +26,8 @@ from ._world import Body, Mesh, World, distance, force_preset
 __version__ = version_string()
 
 __all__ = [
-    "__version__", "World", "Mesh", "Body", "ScriptedDevice", "StreamDevice", "get_time", "distance",
+    "__version__", "World", "Mesh", "Body", "ScriptedDevice", "StreamDevice", "HidDevice", "get_time", "distance",
+    "enumerate_hid_devices", "HidDeviceInfo", "HidDeviceStats",
     "force_preset", "c_dtype", "StreamDeviceStats", "trace_dtype", "has_flag", "HAPTIC_FLAGS",
     "contact_dtype", "ForceSettings", "MeshInfo", "MeshStats", "RigInfo", "Animation", "Skin", "WorldStats", "SearchStats",
     "TrackStats",

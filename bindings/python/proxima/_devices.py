@@ -2,8 +2,8 @@
 
 import numpy as np
 
-from ._core import check, ffi, from_c, lib, pose_to_c, real
-from ._types import ScriptedDeviceRecord, StreamDeviceStats
+from ._core import Unsupported, check, enum_name, ffi, from_c, lib, pose_from_c, pose_to_c, real
+from ._types import HidDeviceInfo, HidDeviceStats, ScriptedDeviceRecord, StreamDeviceStats
 
 
 def get_time():
@@ -101,3 +101,88 @@ class StreamDevice:
 
     def __repr__(self):
         return f"<proxima.StreamDevice {self._idp[0].index1 - 1}>"
+
+
+# ---- HID devices (proxima_hid.h) ----------------------------------------------
+
+
+def hid_function(name):
+    """A function of proxima_hid.h, or Unsupported when the library was built
+    without it (cffi looks each function up on first use)."""
+    try:
+        return getattr(lib, name)
+    except AttributeError:
+        raise Unsupported(f"{name}: this libproxima has no HID devices: it was built without "
+                          "PROX_WITH_HIDAPI (it needs hidapi's hidraw backend, Debian's libhidapi-dev, "
+                          "when the package is built)") from None
+
+
+def _string(chars):
+    return ffi.string(chars).decode("utf-8", errors="replace")
+
+
+def enumerate_hid_devices():
+    """The supported HID devices present now (SpaceMouse family, DualShock 4,
+    DualSense): a list of HidDeviceInfo, whose `path` World.open_hid_device
+    takes. Any thread."""
+    enumerate_ = hid_function("proxEnumerateHidDevices")
+    count = ffi.new("int32_t*")
+    while True:
+        result = enumerate_(ffi.NULL, 0, count)
+        if result != lib.PROX_ERROR_CAPACITY:
+            check(result)
+        infos = ffi.new("proxHidDeviceInfo[]", max(count[0], 1))
+        result = enumerate_(infos, count[0], count)
+        if result == lib.PROX_ERROR_CAPACITY:
+            continue  # one was plugged in meanwhile: ask again
+        check(result)
+        return [HidDeviceInfo(path=_string(i.path), name=_string(i.name), serial=_string(i.serial),
+                              vendor_id=i.vendorId, product_id=i.productId,
+                              profile=enum_name("proxHidProfile", i.profile), interface_number=i.interfaceNumber,
+                              usage_page=i.usagePage, usage=i.usage)
+                for i in (infos[k] for k in range(count[0]))]
+
+
+class HidDevice:
+    """A real HID device driving a tool (proxHidDeviceId, docs/devices.md):
+    its own thread reads the reports, integrates the axes into the tool's
+    pose and writes rumble back, in C. Open it with World.open_hid_device,
+    attach it with Body.set_device; it lives until destroy() or its world's
+    end."""
+
+    def __init__(self, world, idp):
+        self.world = world
+        self._idp = idp
+
+    @property
+    def stats(self):
+        """What the device did since it was opened (HidDeviceStats)."""
+        out = ffi.new("proxHidDeviceStats*")
+        check(lib.proxHidDevice_GetStats(self._idp[0], out))
+        return from_c(HidDeviceStats, out[0])
+
+    @property
+    def pose(self):
+        """The tool's pose as the device last integrated it: (position (3,),
+        quaternion_wxyz (4,))."""
+        out = ffi.new("proxPose*")
+        check(lib.proxHidDevice_GetPose(self._idp[0], out))
+        return pose_from_c(out[0])
+
+    def destroy(self):
+        """Stops its thread and closes it: a tool it holds has no pose from
+        then on (its force fades out)."""
+        check(lib.proxHidDevice_Destroy(self._idp[0]))
+
+    @property
+    def valid(self):
+        """Whether the device is open (not destroyed, nor its world). Any thread."""
+        return bool(lib.proxHidDevice_IsValid(self._idp[0]))
+
+    def _device_def(self):
+        out = ffi.new("proxDeviceDef*")
+        check(lib.proxHidDevice_GetDeviceDef(self._idp[0], out))
+        return out
+
+    def __repr__(self):
+        return f"<proxima.HidDevice {self._idp[0].index1 - 1}>"

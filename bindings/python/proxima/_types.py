@@ -36,6 +36,13 @@ SafetyStats = make_dataclass("proxSafetyStats", "SafetyStats",
                              "The haptic loop's safety decisions (proxSafetyStats).")
 StreamDeviceStats = make_dataclass("proxStreamDeviceStats", "StreamDeviceStats",
                                    "What a streamed device saw (proxStreamDeviceStats).")
+HidDeviceStats = make_dataclass("proxHidDeviceStats", "HidDeviceStats",
+                                "What a HID device did since it was opened (proxHidDeviceStats).")
+# proxHidDeviceInfo, its strings decoded (a char array has no dataclass field).
+HidDeviceInfo = collections.namedtuple(
+    "HidDeviceInfo", "path name serial vendor_id product_id profile interface_number usage_page usage")
+HidDeviceInfo.__doc__ = ("A supported HID device present now (proxHidDeviceInfo): `path` is what "
+                         "World.open_hid_device opens; `profile` how its reports are read.")
 ScriptedDeviceRecord = make_dataclass("proxScriptedDeviceRecord", "ScriptedDeviceRecord",
                                       "What a scripted device was handed (proxScriptedDeviceRecord).")
 

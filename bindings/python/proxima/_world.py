@@ -10,8 +10,8 @@ import weakref
 import numpy as np
 
 from . import _header
-from ._core import (check, enum_value, ffi, fill_c, from_c, integer, invalid, lib, pose_to_c, poses_array, real,
-                    snake, vec3)
+from ._core import (check, enum_value, ffi, fill_c, from_c, integer, invalid, lib, numbers, pose_to_c, poses_array,
+                    real, snake, vec3)
 from ._bodies import Body, Mesh, _key, distance
 from ._types import (ForceSettings, PatchSettings, PatchStats, SafetyStats, SearchStats, ThreadStats, TrackStats,
                      WorldStats)
@@ -351,6 +351,41 @@ class World:
         idp = ffi.new("proxStreamDeviceId*")
         check(lib.proxWorld_CreateStreamDevice(self._idp[0], d, idp))
         return StreamDevice(self, idp)
+
+    def open_hid_device(self, device=None, *, initial_pose=None, reference_point=None, device_to_world=None,
+                        **settings):
+        """Opens a HID device (HidDevice) and starts its thread: `device` is a
+        HidDeviceInfo of enumerate_hid_devices(), its path, or None for the
+        first supported one present (matching vendor_id and product_id when
+        given). initial_pose is where the tool starts (position, quaternion);
+        reference_point the point rotations turn about (tool frame);
+        device_to_world a quaternion (w, x, y, z) from the device's frame to
+        the world's. The settings are proxHidDeviceDef's other fields in
+        snake_case (vendor_id, product_id, linear_speed, angular_speed,
+        dead_zone, response_exponent, rumble_force, trigger_force,
+        output_rate). FileError when no supported device matches. Raises
+        Unsupported when the library was built without PROX_WITH_HIDAPI."""
+        from ._devices import HidDevice, HidDeviceInfo, hid_function
+        d = ffi.new("proxHidDeviceDef*", hid_function("proxDefaultHidDeviceDef")())
+        _fill_settings(d, "proxHidDeviceDef", settings, "open_hid_device",
+                       skip=("path", "initial_pose", "reference_point", "device_to_world"))
+        if initial_pose is not None:
+            pose_to_c(initial_pose, d.initialPose, "open_hid_device: initial_pose")
+        if reference_point is not None:
+            x, y, z = vec3(reference_point, "open_hid_device: reference_point")
+            d.referencePoint = {"x": x, "y": y, "z": z}
+        if device_to_world is not None:
+            w, x, y, z = numbers(device_to_world, 4, "open_hid_device: device_to_world")
+            d.deviceToWorld = {"w": w, "x": x, "y": y, "z": z}
+        if isinstance(device, HidDeviceInfo):
+            device = device.path
+        path = None  # the C string, alive until the call returns
+        if device is not None:
+            path = ffi.new("char[]", _path(device, "open_hid_device: device"))
+            d.path = path
+        idp = ffi.new("proxHidDeviceId*")
+        check(hid_function("proxWorld_OpenHidDevice")(self._idp[0], d, idp))
+        return HidDevice(self, idp)
 
     def load_scripted_device(self, path, seconds_per_pose, loop=False):
         """A scripted device whose path is read from a file: one pose per

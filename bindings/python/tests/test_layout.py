@@ -23,7 +23,8 @@ def c_layout(tmp_path_factory):
     compiled against the repository's header."""
     compiler = os.environ.get("CC") or shutil.which("cc") or shutil.which("gcc")
     assert compiler, "a C compiler (cc) is needed to check the layouts"
-    lines = ["#include <stddef.h>", "#include <stdio.h>", "#include <proxima/proxima.h>", "int main(void) {"]
+    lines = ["#include <stddef.h>", "#include <stdio.h>", "#include <proxima/proxima.h>",
+             "#include <proxima/proxima_hid.h>", "int main(void) {"]
     for name in _structs():
         lines.append(f'  printf("{name} %zu\\n", sizeof(struct {name}));')
         for field, _ in ffi.typeof(f"struct {name}").fields:
@@ -39,7 +40,8 @@ def c_layout(tmp_path_factory):
 
 def test_every_struct_has_the_compilers_layout(c_layout):
     structs = _structs()
-    assert {"proxContact", "proxPolylineInfo", "proxWorldStats", "proxThreadStats", "proxSearchStats"} <= set(structs)
+    assert {"proxContact", "proxPolylineInfo", "proxWorldStats", "proxThreadStats", "proxSearchStats",
+            "proxHidDeviceDef", "proxHidDeviceInfo", "proxHidDeviceStats"} <= set(structs)
     for name in structs:
         dtype = proxima.c_dtype(name)
         assert dtype.itemsize == c_layout[name] == ffi.sizeof(f"struct {name}"), name

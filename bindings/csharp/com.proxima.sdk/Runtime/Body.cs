@@ -176,6 +176,14 @@ namespace Proxima
             Device.Release(id);
         }
 
+        /// <summary>Lets a HID device hold this tool: its sticks or puck move the tool.</summary>
+        public void SetDevice(HidDevice device)
+        {
+            DeviceDef def = device.GetDeviceDef();
+            Native.Check(Native.proxBody_SetDevice(id, ref def));
+            Device.Release(id);
+        }
+
         /// <summary>No device holds the tool: Pose moves it.</summary>
         public void ClearDevice()
         {

@@ -1,4 +1,6 @@
-// The C API's functions, declared as they are in proxima.h. Nothing here is
+// What the binding needs beside the C API's functions, which are generated
+// (Generated/*.g.cs, tools/gen_native.py): the library's name, the callbacks'
+// signatures and the helpers that pin, copy and check. Nothing here is
 // public: World, Mesh, Body and the devices are the interface.
 using System;
 using System.Runtime.CompilerServices;
@@ -8,106 +10,6 @@ using System.Runtime.InteropServices;
 
 namespace Proxima
 {
-    [StructLayout(LayoutKind.Sequential)]
-    internal struct WorldId
-    {
-        public uint Index1, Generation;
-    }
-
-    [StructLayout(LayoutKind.Sequential)]
-    internal struct MeshId
-    {
-        public uint Index1, Generation;
-        public WorldId World;
-    }
-
-    [StructLayout(LayoutKind.Sequential)]
-    internal struct BodyId
-    {
-        public uint Index1, Generation;
-        public WorldId World;
-    }
-
-    [StructLayout(LayoutKind.Sequential)]
-    internal struct ScriptedDeviceId
-    {
-        public uint Index1, Reserved;
-        public WorldId World;
-    }
-
-    [StructLayout(LayoutKind.Sequential)]
-    internal struct StreamDeviceId
-    {
-        public uint Index1, Reserved;
-        public WorldId World;
-    }
-
-    [StructLayout(LayoutKind.Sequential)]
-    internal struct WorldDef
-    {
-        public int ApiVersion;
-        public Method Method;
-        public double Cutoff;
-        public ForceSettings Force;
-        public int InternalValue;
-    }
-
-    [StructLayout(LayoutKind.Sequential)]
-    internal struct MeshDef
-    {
-        public IntPtr Positions;
-        public uint VertexCount;
-        public IntPtr Indices;
-        public uint TriangleCount;
-        public int InternalValue;
-    }
-
-    [StructLayout(LayoutKind.Sequential)]
-    internal struct BodyDef
-    {
-        public MeshId Mesh;
-        public BodyType Type;
-        public Pose Pose;
-        public Vec3 ReferencePoint;
-        public ToolMode ToolMode;
-        public double CouplingStiffness;
-        public double CouplingDamping;
-        public double CouplingAngularStiffness;
-        public double CouplingAngularDamping;
-        public int InternalValue;
-    }
-
-    [StructLayout(LayoutKind.Sequential)]
-    internal struct PolylineInfo
-    {
-        public BodyId Other;
-        public int FirstPoint;
-        public int PointCount;
-        public Bool32 Closed;
-        public int Reserved;
-    }
-
-    [StructLayout(LayoutKind.Sequential)]
-    internal struct DeviceDef
-    {
-        public IntPtr ReadPose;
-        public IntPtr WriteWrench;
-        public IntPtr UserData;
-        public int InternalValue;
-        public int Reserved;
-    }
-
-    [StructLayout(LayoutKind.Sequential)]
-    internal struct ScriptedDeviceDef
-    {
-        public IntPtr Poses;
-        public int PoseCount;
-        public Bool32 Loop;
-        public double SecondsPerPose;
-        public int InternalValue;
-        public int Reserved;
-    }
-
     // The callbacks' C signatures; the thunks in Device.cs implement them.
     [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
     internal delegate int ReadPoseCallback(IntPtr userData, out Pose pose);
@@ -115,7 +17,7 @@ namespace Proxima
     [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
     internal delegate void WriteWrenchCallback(IntPtr userData, ref Wrench wrench);
 
-    internal static class Native
+    internal static partial class Native
     {
 #if (UNITY_IOS || UNITY_WEBGL) && !UNITY_EDITOR
         // Statically linked into the player: IL2CPP resolves these at link time.
@@ -123,64 +25,6 @@ namespace Proxima
 #else
         internal const string Library = "proxima";
 #endif
-
-        // The library's strings belong to it: returned as IntPtr and copied,
-        // because a `string` return would make the marshaller free them.
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern IntPtr proxResultString(Result result);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern IntPtr proxGetLastError();
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Version proxGetVersion();
-
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern WorldDef proxDefaultWorldDef();
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxCreateWorld(ref WorldDef def, out WorldId world);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxDestroyWorld(WorldId world);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Bool32 proxWorld_IsValid(WorldId world);
-
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern MeshDef proxDefaultMeshDef();
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_CreateMesh(WorldId world, ref MeshDef def, out MeshId mesh);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_LoadMesh(WorldId world, byte[] utf8Path, out MeshId mesh);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_LoadMeshFromMemory(WorldId world, byte[] data, ulong size, byte[] utf8Name,
-                                                                   out MeshId mesh);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxMesh_Destroy(MeshId mesh);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Bool32 proxMesh_IsValid(MeshId mesh);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxMesh_GetInfo(MeshId mesh, out MeshInfo info);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxMesh_GetStats(MeshId mesh, out MeshStats stats);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxMesh_GetWarnings(MeshId mesh, byte[] buffer, int capacity, out int length);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxMesh_GetTriangles(MeshId mesh, double[] positions, uint vertexCapacity,
-                                                            out uint vertexCount, uint[] indices,
-                                                            uint triangleCapacity, out uint triangleCount);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxMesh_SetVertices(MeshId mesh, double[] positions, uint vertexCount);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxMesh_GetRigInfo(MeshId mesh, out RigInfo info);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxMesh_GetSkinInfo(MeshId mesh, int skin, out SkinInfo info);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxMesh_GetAnimationCount(MeshId mesh, out int count);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxMesh_GetAnimationInfo(MeshId mesh, int index, out AnimationInfo info);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxMesh_Animate(MeshId mesh, int animation, double seconds);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxMesh_SetJointMatrices(MeshId mesh, int skin, double[] matrices, int count);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxMesh_SetMorphWeights(MeshId mesh, double[] weights, int count);
 
         /// <summary>A NUL-terminated UTF-8 char array of a C struct, as a string.</summary>
         internal static string CString(byte[] bytes)
@@ -190,120 +34,9 @@ namespace Proxima
             return System.Text.Encoding.UTF8.GetString(bytes, 0, length < 0 ? bytes.Length : length);
         }
 
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern BodyDef proxDefaultBodyDef();
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_CreateBody(WorldId world, ref BodyDef def, out BodyId body);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxBody_Destroy(BodyId body);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Bool32 proxBody_IsValid(BodyId body);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxBody_SetPose(BodyId body, ref Pose pose);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxBody_GetPose(BodyId body, out Pose pose);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxBody_GetProxyPose(BodyId tool, out Pose pose);
-
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_Step(WorldId world);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         // Output arrays are passed as pointers the caller pinned: Mono copies a
         // managed array of structs element by element both ways (measured: 20 us
         // for 64 contacts), where pinning costs a GCHandle.
-        internal static extern Result proxBody_GetContacts(BodyId tool, IntPtr contacts, int capacity, out int count);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxBody_GetContactPatches(BodyId tool, IntPtr contacts, IntPtr patches, int capacity,
-                                                                 out int count);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxBody_GetWrench(BodyId tool, out Wrench wrench);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxBody_GetHapticTrace(BodyId tool, [Out] HapticSample[] samples, int capacity, out int count);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxBody_GetIntersections(BodyId tool, IntPtr points, int pointCapacity,
-                                                                out int pointCount, IntPtr lines, int lineCapacity,
-                                                                out int lineCount);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_GetStats(WorldId world, out WorldStats stats);
-
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern DeviceDef proxDefaultDeviceDef();
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxBody_SetDevice(BodyId tool, ref DeviceDef def);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl, EntryPoint = "proxBody_SetDevice")]
-        internal static extern Result proxBody_SetDeviceNull(BodyId tool, IntPtr def);
-
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern ScriptedDeviceDef proxDefaultScriptedDeviceDef();
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_CreateScriptedDevice(WorldId world, ref ScriptedDeviceDef def,
-                                                                     out ScriptedDeviceId device);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_LoadScriptedDevice(WorldId world, byte[] utf8Path, double secondsPerPose,
-                                                                   Bool32 loop, out ScriptedDeviceId device);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxScriptedDevice_GetDeviceDef(ScriptedDeviceId device, out DeviceDef def);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxScriptedDevice_GetRecord(ScriptedDeviceId device,
-                                                                   out ScriptedDeviceRecord record);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxScriptedDevice_Destroy(ScriptedDeviceId device);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Bool32 proxScriptedDevice_IsValid(ScriptedDeviceId device);
-
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern double proxGetTime();
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern StreamDeviceSettings proxDefaultStreamDeviceDef();
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_CreateStreamDevice(WorldId world, ref StreamDeviceSettings def,
-                                                                   out StreamDeviceId device);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxStreamDevice_PushPose(StreamDeviceId device, ref Pose pose, double timeSeconds);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxStreamDevice_GetWrench(StreamDeviceId device, out Wrench wrench);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxStreamDevice_GetDeviceDef(StreamDeviceId device, out DeviceDef def);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxStreamDevice_GetStats(StreamDeviceId device, out StreamDeviceStats stats);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxStreamDevice_Destroy(StreamDeviceId device);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Bool32 proxStreamDevice_IsValid(StreamDeviceId device);
-
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern ThreadSettings proxDefaultThreadsDef();
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_StartThreads(WorldId world, ref ThreadSettings def);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_StopThreads(WorldId world);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_GetThreadStats(WorldId world, ThreadRole thread, out ThreadStats stats);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_GetSafetyStats(WorldId world, out SafetyStats stats);
-
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxGetForcePreset(ForcePreset preset, out ForceSettings force, out double cutoff);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_GetSearchStats(WorldId world, out SearchStats stats);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_Track(WorldId world);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_GetTrackStats(WorldId world, out TrackStats stats);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxBody_GetIntersectionStats(BodyId tool, out IntersectionStats stats);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_GetPatchSettings(WorldId world, out PatchSettings settings);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_SetPatchSettings(WorldId world, ref PatchSettings settings);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_GetPatchStats(WorldId world, out PatchStats stats);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_SetLeafBudget(WorldId world, ulong leafPairs);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_GetLeafBudget(WorldId world, out ulong leafPairs);
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxBody_GetDistance(BodyId a, BodyId b, double maxDistance, out double distance);
 
         /// <summary>proxBody_GetContactPatches into managed arrays (either may be null), pinned
         /// for the call; the capacity is the shorter one's length.</summary>

@@ -2,46 +2,11 @@ using System.Runtime.InteropServices;
 
 namespace Proxima
 {
-    /// <summary>How a streamed device turns the pushed samples into the pose of each haptic tick.</summary>
-    public enum StreamMode
-    {
-        /// <summary>The newest sample's pose.</summary>
-        Hold = 0,
-        /// <summary>The pose Delay ago, between the samples around it; held past the newest.</summary>
-        Interpolate = 1,
-        /// <summary>The pose now: between samples, or predicted from the newest two
-        /// (at most MaxExtrapolation past the newest, then held).</summary>
-        Extrapolate = 2,
-    }
-
     /// <summary>proxStreamDeviceDef: start from StreamDeviceSettings.Default.</summary>
-    [StructLayout(LayoutKind.Sequential)]
-    public struct StreamDeviceSettings
+    public partial struct StreamDeviceSettings
     {
-        public StreamMode Mode;          // default Interpolate
-        public double Delay;             // s, >= 0: Interpolate's latency (default 1/90: one 90 Hz frame)
-        public double MaxExtrapolation;  // s, >= 0: Extrapolate's furthest prediction (default 0.02)
-        public double StaleAfter;        // s, > 0: nothing pushed for this long: no pose, the force fades (default 0.05)
-        readonly int internalValue;
-        readonly int reserved;
-
         /// <summary>Every field at its default (proxDefaultStreamDeviceDef). Any thread.</summary>
         public static StreamDeviceSettings Default => Native.proxDefaultStreamDeviceDef();
-    }
-
-    /// <summary>proxStreamDeviceStats: what a streamed device saw since it was created.</summary>
-    [StructLayout(LayoutKind.Sequential)]
-    public struct StreamDeviceStats
-    {
-        public ulong SamplesPushed;      // accepted
-        public ulong SamplesDropped;     // no newer than the newest accepted: late or duplicate
-        public ulong SamplesRefused;     // invalid: non-finite, zero quaternion, bad time
-        public ulong Reads;              // haptic ticks that asked for the pose
-        public ulong StaleTicks;         // ... and got none
-        public ulong ExtrapolatedTicks;  // ... rendered past the newest sample
-        public double MeanSampleInterval, MaxSampleInterval; // s, between accepted samples' times
-        public double MaxExtrapolation;  // s: the furthest a rendered pose was predicted
-        public double LastSampleAge;     // s: now minus the newest sample's time, at the last read
     }
 
     /// <summary>The built-in streamed device (proxStreamDeviceId): how a game drives a tool

@@ -244,6 +244,21 @@ namespace Proxima
         /// <summary>A streamed device with StreamDeviceSettings.Default.</summary>
         public StreamDevice CreateStreamDevice() => CreateStreamDevice(StreamDeviceSettings.Default);
 
+        /// <summary>Opens a HID device (see HidDevice) and starts its thread: the first
+        /// supported one present, with HidDeviceSettings.Default. ProximaException (File)
+        /// when none is. Attach it with Body.SetDevice. Game thread.</summary>
+        public HidDevice OpenHidDevice() => HidDevice.Open(id, HidDeviceSettings.Default, null);
+
+        /// <summary>Opens the HID device HidDevice.Enumerate listed.</summary>
+        public HidDevice OpenHidDevice(HidDeviceInfo device) =>
+            HidDevice.Open(id, HidDeviceSettings.Default, device.Path);
+
+        /// <summary>Opens a HID device with these settings: the one at `path` (a
+        /// HidDeviceInfo.Path), or when it is null the first supported one matching the
+        /// settings' VendorId and ProductId (0: any).</summary>
+        public HidDevice OpenHidDevice(HidDeviceSettings settings, string path = null) =>
+            HidDevice.Open(id, settings, path);
+
         /// <summary>A scripted device whose path is a file: "tx ty tz qw qx qy qz" per line.</summary>
         public ScriptedDevice LoadScriptedDevice(string path, double secondsPerPose, bool loop)
         {

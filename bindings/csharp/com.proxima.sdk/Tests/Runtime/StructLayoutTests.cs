@@ -7,14 +7,17 @@ using NUnit.Framework;
 namespace Proxima.Tests
 {
     /// <summary>Every struct crossing P/Invoke has the size and field offsets a C
-    /// compiler gives its proxima.h twin: the C side is printed by
-    /// tests/csharp/struct_layout.c, built against the header.</summary>
+    /// compiler gives its twin in the headers: the C side is printed by the
+    /// program tools/gen_native.py --layout-c generates (struct_layout.c in the
+    /// build), built against the headers, which names each struct's and field's
+    /// C# twin too.</summary>
     [TestFixture]
     public class StructLayoutTests
     {
         // Read once, on first use: NUnit 2.6's [TestFixtureSetUp] is obsolete in
         // the NUnit 3 of Unity's Test Runner, and [OneTimeSetUp] is not in 2.6.
         static Dictionary<string, int> layout;
+        static List<string[]> twins;
 
         static Dictionary<string, int> C
         {
@@ -27,6 +30,7 @@ namespace Proxima.Tests
                     RedirectStandardOutput = true,
                 };
                 var read = new Dictionary<string, int>();
+                var named = new List<string[]>();
                 using (Process p = Process.Start(start))
                 {
                     string line;
@@ -34,10 +38,12 @@ namespace Proxima.Tests
                     {
                         string[] parts = line.Split(' ');
                         read[parts[0]] = int.Parse(parts[1]);
+                        if (parts.Length == 3) named.Add(parts);
                     }
                     p.WaitForExit();
                     Assert.AreEqual(0, p.ExitCode, "struct_layout failed");
                 }
+                twins = named;
                 return layout = read;
             }
         }
@@ -87,6 +93,39 @@ namespace Proxima.Tests
             new object[] { "proxPatchSettings", typeof(PatchSettings) },
             new object[] { "proxPatchStats", typeof(PatchStats) },
         };
+
+        /// <summary>Every struct, enum and field of the bound headers, against the C# type
+        /// and field the generator bound it to: nothing generated escapes the check.</summary>
+        [Test]
+        public void EveryGeneratedTypeIsC()
+        {
+            Assert.IsNotNull(C);
+            var failures = new List<string>();
+            int structs = 0, fields = 0;
+            Type type = null;
+            foreach (string[] t in twins)
+            {
+                if (!t[0].Contains("."))
+                {
+                    type = typeof(World).Assembly.GetType("Proxima." + t[2]);
+                    if (type == null) { failures.Add(t[0] + ": no type Proxima." + t[2]); continue; }
+                    int size = type.IsEnum ? Marshal.SizeOf(Enum.GetUnderlyingType(type)) : Marshal.SizeOf(type);
+                    if (size != int.Parse(t[1])) failures.Add(t[0] + " is " + t[1] + " bytes, " + t[2] + " " + size);
+                    ++structs;
+                    continue;
+                }
+                if (type == null) continue;
+                int offset;
+                try { offset = Marshal.OffsetOf(type, t[2]).ToInt32(); }
+                catch (ArgumentException) { failures.Add(t[0] + ": no field " + type.Name + "." + t[2]); continue; }
+                if (offset != int.Parse(t[1])) failures.Add(t[0] + " at " + t[1] + ", " + type.Name + "." + t[2] + " at " + offset);
+                ++fields;
+            }
+            Assert.IsEmpty(failures, string.Join("\n", failures));
+            // The headers have about 50 types and 300 fields: an empty listing is a failure too.
+            Assert.Greater(structs, 40);
+            Assert.Greater(fields, 250);
+        }
 
         [TestCaseSource("Twins")]
         public void SizeIsC(string cName, Type type)
