@@ -80,10 +80,10 @@ typedef struct proxHidDeviceDef {
   /* N (N m for a wheel) at full magnitude, > 0 (default 5): the magnitude a
    * PID device takes is a fraction of what the device is set to. */
   double maxForce;
-  /* The sign of the force on each device axis (x, then y): 1 as DirectInput
-   * pushes, -1 the other way, 0 (default) the firmware's known convention
-   * (the Arduino library's is -1, every other +1). */
-  int32_t forceSign[2];
+  /* The sign of the force on each device axis, the stick's X and Y: 1 as
+   * DirectInput pushes, -1 the other way, 0 (default) the firmware's known
+   * convention (the Arduino library's is -1, every other +1). */
+  int32_t forceSignX, forceSignY;
   int32_t internalValue;
   int32_t reserved;
 } proxHidDeviceDef;

@@ -123,11 +123,12 @@ proxResult proxWorld_OpenHidDevice(proxWorldId world, const proxHidDeviceDef* de
     s.output_rate = def->outputRate;
     need_range(def->workspace, 0.0, 100.0, "def->workspace");
     need_positive(def->maxForce, "def->maxForce");
+    const int32_t signs[2] = {def->forceSignX, def->forceSignY};
     for (int k = 0; k < 2; ++k) {
-      if (def->forceSign[k] < -1 || def->forceSign[k] > 1)
-        fail(PROX_ERROR_INVALID_ARGUMENT, "def->forceSign[" + std::to_string(k) + "] must be -1, 0 or 1 (it is " +
-                                              std::to_string(def->forceSign[k]) + ")");
-      s.force_sign[k] = def->forceSign[k];
+      if (signs[k] < -1 || signs[k] > 1)
+        fail(PROX_ERROR_INVALID_ARGUMENT, std::string("def->forceSign") + "XY"[k] + " must be -1, 0 or 1 (it is " +
+                                              std::to_string(signs[k]) + ")");
+      s.force_sign[k] = signs[k];
     }
     s.workspace = def->workspace;
     s.max_force = def->maxForce;

@@ -25,7 +25,7 @@ namespace {
 // Firmwares whose push is the opposite of DirectInput's (the Arduino
 // Joystick-with-FFB library computes +sin/-cos: ../shared/devices/pid/
 // PROTOCOL.md, section 7). Which way a device pushes is its calibration,
-// not its descriptor's: proxHidDeviceDef.forceSign overrides this.
+// not its descriptor's: proxHidDeviceDef.forceSignX and forceSignY override it.
 bool pushes_opposite(std::uint16_t vendor_id, std::uint16_t product_id) {
   return vendor_id == 0x2341 && product_id == 0x8036;  // Arduino Leonardo
 }

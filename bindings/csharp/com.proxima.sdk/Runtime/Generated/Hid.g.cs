@@ -18,6 +18,10 @@ namespace Proxima
         DualShock4 = 3,
         /// <summary>Sony DualSense (USB)</summary>
         DualSense = 4,
+        /// <summary>HID PID force feedback, recognised from the report descriptor: two force axes (a stick)</summary>
+        PidJoystick = 5,
+        /// <summary>one force axis (a wheel base)</summary>
+        PidWheel = 6,
     }
 
     /// <summary>proxHidDeviceInfo: A supported device present now. Strings are UTF-8 and NUL-terminated (cut to fit).</summary>
@@ -77,10 +81,43 @@ namespace Proxima
         public double RumbleForce;
         // N, > 0: the force at which the DualSense trigger's resistance is full (default 3)
         public double TriggerForce;
-        // Hz, (0, 250]: the most output reports a second (default 250)
+        // Hz, (0, 250]: the most output reports a second (default 250; a PID device sends at most one report
+        // a millisecond, whatever this says)
         public double OutputRate;
+        // Force-feedback (PID) devices. Position control: the tool's travel at full deflection about
+        // initialPose along the device frame's x (the stick's X, right) and z (its Y, towards the user), in
+        // m; for a wheel, its turn about the device frame's z, in rad. 0 (default): 0.1 m, or 1 rad.
+        public double Workspace;
+        // N (N m for a wheel) at full magnitude, > 0 (default 5): the magnitude a PID device takes is a
+        // fraction of what the device is set to.
+        public double MaxForce;
+        // The sign of the force on each device axis, the stick's X and Y: 1 as DirectInput pushes, -1 the
+        // other way, 0 (default) the firmware's known convention (the Arduino library's is -1, every other
+        // +1).
+        public int ForceSignX;
+        // The sign of the force on each device axis, the stick's X and Y: 1 as DirectInput pushes, -1 the
+        // other way, 0 (default) the firmware's known convention (the Arduino library's is -1, every other
+        // +1).
+        public int ForceSignY;
         readonly int internalValue;
         readonly int reserved;
+    }
+
+    /// <summary>proxHidForceEffect: Where a PID device's constant-force effect is.</summary>
+    public enum HidForceEffect
+    {
+        /// <summary>not a PID device, or not created yet</summary>
+        None = 0,
+        /// <summary>created, started and renewed</summary>
+        Playing = 1,
+        /// <summary>the device had no free effect block: input only</summary>
+        Full = 2,
+        /// <summary>the device could not create it: input only</summary>
+        Error = 3,
+        /// <summary>Block Load never answered: input only</summary>
+        NoAnswer = 4,
+        /// <summary>stopped and freed (closed, or unplugged)</summary>
+        Stopped = 5,
     }
 
     /// <summary>proxHidDeviceStats: What a HID device did. Counts since it was opened.</summary>
@@ -108,6 +145,16 @@ namespace Proxima
         public ulong NoPoseTicks;
         // s since the last input report (-1 before the first)
         public double LastReportAge;
+        // PID devices: Set Constant Force reports written
+        public ulong ForceUpdates;
+        // constant-force effects created (one more at each reconnection)
+        public ulong EffectsCreated;
+        // the last magnitude sent, a fraction of maxForce in [-1, 1]
+        public double LastForceMagnitude;
+        // the largest |magnitude| sent, in [0, 1]
+        public double MaxForceMagnitude;
+        public HidForceEffect ForceEffect;
+        readonly int reserved;
     }
 
     internal static partial class Native
