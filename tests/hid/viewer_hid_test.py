@@ -25,6 +25,14 @@ def pad(lx):
     return b.hex()
 
 
+def stick(x):
+    """OpenFFBoard's input report 0x01 (25 bytes) with its X at x of its travel."""
+    b = bytearray(25)
+    b[0] = 1
+    b[9:11] = (round(x * 32767) & 0xFFFF).to_bytes(2, "little")
+    return b.hex()
+
+
 def emulate(devices, sends, *viewer_args):
     args = [EMULATE]
     for d in devices:
@@ -53,6 +61,20 @@ class ViewerHidTest(unittest.TestCase):
                 self.assertLess(x, START_X - 0.015)
                 self.assertGreater(x, START_X - 0.05)
                 self.assertEqual((y, z), (0.0, 0.0))
+
+    def test_a_force_feedback_stick_holds_the_tool_where_it_is(self):
+        # Position control: the stick at -0.3 of its 0.1 m travel puts the
+        # tool 3 cm towards A, and keeps it there.
+        r = emulate(["openffboard"], [(0, 0, stick(-0.3))], "--headless", "--validation", "--device", "hid",
+                    "--frames", "20", "--size", "320x180")
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        m = re.search(r"hid device: (\d+) reports read, (\d+) malformed, \d+ outputs written, tool at "
+                      r"(\S+) (\S+) ([^\s,]+)", r.stdout)
+        self.assertIsNotNone(m, r.stdout)
+        self.assertEqual((int(m.group(1)), int(m.group(2))), (1, 0))
+        x, y, z = (float(m.group(i)) for i in (3, 4, 5))
+        self.assertAlmostEqual(x, START_X - 0.03, delta=1e-4)
+        self.assertEqual((y, z), (0.0, 0.0))
 
     def test_hid_with_nothing_plugged_in_is_refused(self):
         r = emulate([], [], "--headless", "--device", "hid", "--frames", "1", "--size", "320x180")
