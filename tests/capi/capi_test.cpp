@@ -98,7 +98,10 @@ TEST(CApiBasics, CreateWorldValidatesTheDef) {
   EXPECT_FAILS(proxCreateWorld(&def, &w), PROX_ERROR_VERSION_MISMATCH, "takes defs of");
   def.apiVersion = -1;
   EXPECT_FAILS(proxCreateWorld(&def, &w), PROX_ERROR_VERSION_MISMATCH, "API version");
-  for (int32_t minor = 0; minor <= PROX_VERSION_MINOR; ++minor) {
+  // 0.4 grew proxDeviceDef: a 0.3 program is refused, told to rebuild.
+  def.apiVersion = (PROX_VERSION_MAJOR << 16) | 3;
+  EXPECT_FAILS(proxCreateWorld(&def, &w), PROX_ERROR_VERSION_MISMATCH, "rebuild");
+  for (int32_t minor = 4; minor <= PROX_VERSION_MINOR; ++minor) {
     def.apiVersion = (PROX_VERSION_MAJOR << 16) | minor;
     ASSERT_EQ(proxCreateWorld(&def, &w), PROX_SUCCESS) << "a def of version 0." << minor << ": " << proxGetLastError();
     ASSERT_OK(proxDestroyWorld(w));

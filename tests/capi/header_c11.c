@@ -20,7 +20,7 @@ _Static_assert(sizeof(proxRigInfo) == 16, "proxRigInfo");
 _Static_assert(sizeof(proxSkinInfo) == 72, "proxSkinInfo");
 _Static_assert(sizeof(proxAnimationInfo) == 88, "proxAnimationInfo");
 _Static_assert(sizeof(proxPolylineInfo) == 32, "proxPolylineInfo");
-_Static_assert(sizeof(proxDeviceDef) == 32, "proxDeviceDef");
+_Static_assert(sizeof(proxDeviceDef) == 48, "proxDeviceDef");
 _Static_assert(sizeof(proxScriptedDeviceId) == 16, "proxScriptedDeviceId");
 _Static_assert(sizeof(proxScriptedDeviceDef) == 32, "proxScriptedDeviceDef");
 _Static_assert(sizeof(proxScriptedDeviceRecord) == 104, "proxScriptedDeviceRecord");

@@ -261,6 +261,69 @@ TEST_P(PidDevices, UnplugStopsAndAReconnectCreatesTheEffectAnew) {
   EXPECT_EQ(model->errors(), "");
 }
 
+// What the device renders stably is declared in its def, checked, and
+// handed on in the def that attaches it (the tool's renderer reads it).
+TEST_P(PidDevices, ItsDeclaredLimitsComeWithItsDeviceDef) {
+  const Firmware& f = GetParam();
+  EmulatedHidSpec spec = device_spec(f.name);
+  model = EmulatedPid::attach(spec, f.slots);
+  dev = bus.add(spec);
+  proxHidDeviceDef def = def_for(f.vid, f.pid);
+  def.maxStiffness = -5.0;
+  EXPECT_FAILS(proxWorld_OpenHidDevice(world, &def, &device), PROX_ERROR_INVALID_ARGUMENT, "maxStiffness");
+  def.maxStiffness = 300.0;
+  def.damping = 1.5;
+  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &device));
+  proxDeviceDef d{};
+  ASSERT_OK(proxHidDevice_GetDeviceDef(device, &d));
+  EXPECT_EQ(d.maxStiffness, 300.0);
+  EXPECT_EQ(d.damping, 1.5);
+  EXPECT_OK(proxBody_SetDevice(tool, &d));
+}
+
+// A wheel base (OpenFFBoard's one-axis build): turned right by half its
+// lock, the tool turns clockwise as its driver sees it (about the device
+// frame's z, towards the user), by half the workspace's radians, about its
+// reference point; its effect's direction is east for good.
+TEST(PidWheel, TurnsTheToolAboutItsAxle) {
+  EmulatedHidBus bus;
+  EmulatedHidSpec spec = device_spec("openffboard_1axis");
+  const std::shared_ptr<EmulatedPid> model = EmulatedPid::attach(spec, 40);
+  const int dev = bus.add(spec);
+  proxWorldDef wd = proxDefaultWorldDef();
+  proxWorldId world{};
+  ASSERT_OK(proxCreateWorld(&wd, &world));
+  proxHidDeviceDef def = proxDefaultHidDeviceDef();
+  def.referencePoint = {0.0, 0.1, 0.0};  // the tool turns about a point 10 cm above its origin
+  def.workspace = 0.8;                   // rad at full lock
+  proxHidDeviceId device{};
+  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &device));
+  proxHidDeviceStats s{};
+  ASSERT_TRUE(wait_until([&] {
+    EXPECT_OK(proxHidDevice_GetStats(device, &s));
+    return s.forceEffect == PROX_HID_EFFECT_PLAYING;
+  }));
+  EXPECT_EQ(s.profile, PROX_HID_PID_WHEEL);
+  bus.send(dev, stick(model->layout(), 0.5, 0.0));
+  ASSERT_TRUE(wait_until([&] {
+    EXPECT_OK(proxHidDevice_GetStats(device, &s));
+    return s.reportsRead > 0;
+  }));
+  proxPose p{};
+  ASSERT_OK(proxHidDevice_GetPose(device, &p));
+  // -0.4 rad about z: q = (cos 0.2, 0, 0, -sin 0.2); the origin, below the
+  // reference point (0, 0.1, 0), swings clockwise about it, to the left:
+  // (-0.1 sin 0.4, 0.1 - 0.1 cos 0.4, 0).
+  EXPECT_NEAR(p.rotation.w, std::cos(0.2), 1e-4);
+  EXPECT_NEAR(p.rotation.z, -std::sin(0.2), 1e-4);
+  EXPECT_NEAR(p.position.x, -0.1 * std::sin(0.4), 1e-5);
+  EXPECT_NEAR(p.position.y, 0.1 - 0.1 * std::cos(0.4), 1e-5);
+  const std::vector<EmulatedPid::Effect> e = model->effects();
+  EXPECT_EQ(e[0].direction, 9000);
+  EXPECT_EQ(model->errors(), "");
+  ASSERT_OK(proxDestroyWorld(world));
+}
+
 INSTANTIATE_TEST_SUITE_P(Firmwares, PidDevices, ::testing::Values(kOpenFfb, kArduino),
                          [](const ::testing::TestParamInfo<Firmware>& i) {
                            return std::string(i.param.opposite ? "Arduino" : "OpenFFBoard");

@@ -27,6 +27,14 @@ typedef struct proxDeviceDef {
    * changed it). May be NULL. */
   void (*writeWrench)(void* userData, const proxWrench* wrench);
   void* userData;
+  /* What the device renders stably at the haptic rate, as CHAI3D's
+   * cHapticDeviceInfo declares it: the stiffest contact in N/m (>= 0; 0,
+   * the default: no limit) and the damping in N s/m it needs (>= 0, default
+   * 0). The force it is handed never grows faster than maxStiffness per
+   * metre the tool moves, and a constrained tool's coupling is no stiffer
+   * (docs/devices.md, "A device's limits"). */
+  double maxStiffness;
+  double damping;
   int32_t internalValue;
   int32_t reserved;
 } proxDeviceDef;

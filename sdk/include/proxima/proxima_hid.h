@@ -84,6 +84,11 @@ typedef struct proxHidDeviceDef {
    * DirectInput pushes, -1 the other way, 0 (default) the firmware's known
    * convention (the Arduino library's is -1, every other +1). */
   int32_t forceSignX, forceSignY;
+  /* What the device renders stably, as proxDeviceDef.maxStiffness and
+   * damping say (N/m and N s/m; 0, the default: no limit, no damping). A
+   * force-feedback stick's firmware and motor decide it: measure it. */
+  double maxStiffness;
+  double damping;
   int32_t internalValue;
   int32_t reserved;
 } proxHidDeviceDef;

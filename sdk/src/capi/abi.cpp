@@ -20,7 +20,7 @@ static_assert(sizeof(proxMeshInfo) == 68 + 4, "ABI");
 static_assert(sizeof(proxRigInfo) == 16, "ABI");
 static_assert(sizeof(proxSkinInfo) == 72, "ABI");
 static_assert(sizeof(proxAnimationInfo) == 88, "ABI");
-static_assert(sizeof(proxDeviceDef) == 32, "ABI");
+static_assert(sizeof(proxDeviceDef) == 48, "ABI");
 static_assert(sizeof(proxScriptedDeviceId) == 16, "ABI");
 static_assert(sizeof(proxScriptedDeviceDef) == 32, "ABI");
 static_assert(sizeof(proxScriptedDeviceRecord) == 104, "ABI");

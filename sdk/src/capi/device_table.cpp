@@ -153,6 +153,9 @@ proxDeviceDef device_def(const DeviceUse& use) {
   def.readPose = &read_pose;
   def.writeWrench = &write_wrench;
   def.userData = &use.device();
+  const runtime::DeviceLimits limits = use.device().limits();
+  def.maxStiffness = limits.max_stiffness;
+  def.damping = limits.damping;
   return def;
 }
 

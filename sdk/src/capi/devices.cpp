@@ -19,6 +19,8 @@ class CallbackDevice final : public runtime::HapticDevice {
   CallbackDevice(const proxDeviceDef& def, std::shared_ptr<runtime::HapticDevice> keep)
       : def_(def), keep_(std::move(keep)) {}
 
+  runtime::DeviceLimits limits() const override { return {def_.maxStiffness, def_.damping}; }
+
   bool read_pose(runtime::DevicePose* out) override {
     proxPose p{};
     if (!def_.readPose(def_.userData, &p)) return false;
@@ -71,6 +73,8 @@ proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def) {
     }
     need_def(*def, "proxDefaultDeviceDef");
     if (!def->readPose) fail(PROX_ERROR_INVALID_ARGUMENT, "def->readPose is NULL");
+    need_non_negative(def->maxStiffness, "def->maxStiffness");
+    need_non_negative(def->damping, "def->damping");
     // A device Proxima made, as it came, is held directly (and is handed
     // the closest distance, which proxWrench does not carry); any other def
     // through its callbacks.

@@ -130,6 +130,9 @@ proxResult proxWorld_OpenHidDevice(proxWorldId world, const proxHidDeviceDef* de
                                               std::to_string(signs[k]) + ")");
       s.force_sign[k] = signs[k];
     }
+    need_non_negative(def->maxStiffness, "def->maxStiffness");
+    need_non_negative(def->damping, "def->damping");
+    s.limits = {def->maxStiffness, def->damping};
     s.workspace = def->workspace;
     s.max_force = def->maxForce;
     std::string error;

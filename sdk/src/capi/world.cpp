@@ -18,6 +18,15 @@ proxWorldDef proxDefaultWorldDef(void) {
   return d;
 }
 
+namespace {
+
+// The oldest minor version of this major one whose public structs are laid
+// out as this library's: 0.4 grew proxDeviceDef (maxStiffness, damping),
+// so a 0.3 program's defs would be read past their end.
+constexpr int32_t kOldestCompatibleMinor = 4;
+
+}  // namespace
+
 proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
   return guard("proxCreateWorld", [&] {
     need(def, "def");
@@ -25,15 +34,17 @@ proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
     *world = proxWorldId{};
     need_def(*def, "proxDefaultWorldDef");
     // A program built against an older minor version of the same major one
-    // runs on this library (what it knows is still here, in its place); a
-    // newer minor one or another major one does not.
+    // runs on this library (what it knows is still here, in its place), back
+    // to the oldest whose structs are laid out as this one's; a newer minor
+    // one or another major one does not.
     const int32_t major = def->apiVersion >> 16, minor = def->apiVersion & 0xFFFF;
-    if (major != PROX_VERSION_MAJOR || minor > PROX_VERSION_MINOR)
+    if (major != PROX_VERSION_MAJOR || minor > PROX_VERSION_MINOR || minor < kOldestCompatibleMinor)
       fail(PROX_ERROR_VERSION_MISMATCH,
            "def comes from API version " + std::to_string(major) + "." + std::to_string(minor) +
                "; this library is " + std::to_string(PROX_VERSION_MAJOR) + "." +
                std::to_string(PROX_VERSION_MINOR) + " and takes defs of " + std::to_string(PROX_VERSION_MAJOR) +
-               ".0 to " + std::to_string(PROX_VERSION_MAJOR) + "." + std::to_string(PROX_VERSION_MINOR));
+               "." + std::to_string(kOldestCompatibleMinor) + " to " + std::to_string(PROX_VERSION_MAJOR) + "." +
+               std::to_string(PROX_VERSION_MINOR) + " (rebuild the program against this library's headers)");
     const int32_t method = enum_value(def->method);
     if (method != PROX_METHOD_PRECISE && method != PROX_METHOD_ORIGINAL && method != PROX_METHOD_REFERENCE)
       fail(PROX_ERROR_INVALID_ARGUMENT, "def->method is not a proxMethod");

@@ -63,6 +63,7 @@ struct HidDeviceSettings {
   double workspace = 0.0;
   double max_force = 5.0;
   int force_sign[2] = {0, 0};
+  runtime::DeviceLimits limits;  // what it renders stably (none by default)
 };
 
 struct HidStats {
@@ -94,6 +95,7 @@ class HidDevice final : public runtime::HapticDevice {
   // The haptic thread's side.
   bool read_pose(runtime::DevicePose* pose) override;
   void write_wrench(const runtime::DeviceWrench& wrench) override;
+  runtime::DeviceLimits limits() const override { return settings_.limits; }
 
   HidStats stats() const;
   // The pose last integrated (valid or not).

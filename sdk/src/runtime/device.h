@@ -33,6 +33,13 @@ struct DeviceWrench {
   double safety_distance = 0.0, cutoff = 0.0;
 };
 
+// What a device renders stably at the haptic rate (CHAI3D's
+// cHapticDeviceInfo): the stiffest contact and the damping it needs.
+struct DeviceLimits {
+  double max_stiffness = 0.0;  // N/m; 0: no limit
+  double damping = 0.0;        // N s/m
+};
+
 // Every device a tool can hold implements this: Proxima's own (scripted,
 // streamed, HID, OpenXR) and the application's callbacks alike. The runtime
 // holds the device itself; nothing is recognised by its callbacks.
@@ -46,6 +53,9 @@ class HapticDevice {
   // Haptic thread, as read_pose: the wrench to render. The default is a
   // device that only moves.
   virtual void write_wrench(const DeviceWrench& wrench) { (void)wrench; }
+  // Any thread: what the device declared it renders stably (none by
+  // default). Read when a tool takes the device.
+  virtual DeviceLimits limits() const { return {}; }
   // Game thread: stops what the device runs of its own (a thread, an
   // effect on the hardware); from then on it has no pose. Called when its
   // owner lets it go (its id destroyed, its world destroyed); idempotent.

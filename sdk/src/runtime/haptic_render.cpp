@@ -4,10 +4,52 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+
 namespace prox::runtime {
 
-HapticRenderer::HapticRenderer(const RenderSettings& settings) : settings_(settings), last_proxy_(settings.start) {
-  if (settings_.constrained) lambda_.reserve(settings_.capacity);
+HapticRenderer::HapticRenderer(const RenderSettings& settings)
+    : settings_(settings), stiffness_(settings.constrained ? DeviceLimits{} : settings.limits),
+      last_proxy_(settings.start) {
+  if (settings_.constrained) {
+    lambda_.reserve(settings_.capacity);
+    // A constrained tool's coupling is the virtual coupling: no stiffer than
+    // the device renders, damped as much as it needs.
+    coupling::CouplingSettings& c = settings_.coupling;
+    if (settings_.limits.max_stiffness > 0.0) c.linear_stiffness = std::min(c.linear_stiffness, settings_.limits.max_stiffness);
+    c.linear_damping = std::max(c.linear_damping, settings_.limits.damping);
+  }
+}
+
+Wrench StiffnessLimit::step(const Wrench& target, const Vec3& point, double dt, const Wrench& from) {
+  if (!started_) {
+    out_ = from;
+    last_point_ = point;
+    started_ = true;
+  }
+  const Vec3 moved = point - last_point_;
+  last_point_ = point;
+  Wrench next = target;
+  if (limits_.max_stiffness > 0.0 && glm::length(target.force) > glm::length(out_.force)) {
+    // Growing: by at most the device's stiffness times the motion; the
+    // torque keeps pace with the force.
+    const Vec3 gap = target.force - out_.force;
+    const double budget = limits_.max_stiffness * glm::length(moved), size = glm::length(gap);
+    if (size > budget) {
+      const double f = budget / size;
+      next.force = out_.force + gap * f;
+      next.torque = out_.torque + (target.torque - out_.torque) * f;
+    }
+  }
+  out_ = next;
+  // Damping against motion into the force (pushing it in), never pulling.
+  const double size = glm::length(next.force);
+  if (limits_.damping > 0.0 && size > 0.0 && dt > 0.0) {
+    const Vec3 n = next.force / size;
+    const double into = -glm::dot(moved, n) / dt;  // m/s against the force
+    if (into > 0.0) next.force += limits_.damping * into * n;
+  }
+  return next;
 }
 
 namespace {
@@ -56,6 +98,7 @@ Wrench HapticRenderer::render(const ContactSnapshot& snapshot, const Pose& devic
   if (!valid) {
     // The gate fades what is not trusted; the proxy stays where it was.
     continuity_.reset();
+    stiffness_.reset();
     offset_rate_.reset();
     rendered_ = false;
     *proxy_out = settings_.constrained ? last_proxy_ : device;
@@ -93,7 +136,9 @@ Wrench HapticRenderer::render(const ContactSnapshot& snapshot, const Pose& devic
   else if (!rendered_)
     continuity_.switched(gate_output, now);  // trusted again (or the first tick): from what the device has
   rendered_ = true;
-  return continuity_.step(now, dt);
+  const Wrench smooth = continuity_.step(now, dt);
+  if (!stiffness_.active()) return smooth;
+  return stiffness_.step(smooth, device.apply(settings_.reference_local), dt, gate_output);
 }
 
 }  // namespace prox::runtime

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "coupling/haptic_proxy.h"
+#include "runtime/device.h"
 #include "runtime/haptic.h"
 
 #include <vector>
@@ -25,6 +26,31 @@ struct RenderSettings {
   double radius = 0.0;        // of the tool's bounds about the reference point
   std::size_t capacity = 0;   // the snapshots' contact capacity (the proxy solve's storage)
   Pose start;                 // a constrained tool's proxy until the first trusted tick: where it was made
+  DeviceLimits limits;        // what the tool's device renders stably
+};
+
+// A device that renders at most `max_stiffness` N/m stably: the force it is
+// handed grows by no more than that per metre its tool's reference point
+// moves (a virtual coupling between the hand and the contact force where
+// the force curve is stiffer than the device: pushed further in, the hand
+// feels the device's stiffness, not the curve's), and falls as the contacts
+// say (less force on the way out is never unstable). `damping` resists
+// motion into a contact's force. The haptic thread's own.
+class StiffnessLimit {
+ public:
+  explicit StiffnessLimit(const DeviceLimits& limits = {}) : limits_(limits) {}
+  bool active() const { return limits_.max_stiffness > 0.0 || limits_.damping > 0.0; }
+  // The wrench for the device, from the contacts' `target` with the
+  // reference point at `point`; `from` is what the device has when the
+  // limit (re)starts.
+  Wrench step(const Wrench& target, const Vec3& point, double dt, const Wrench& from);
+  void reset() { started_ = false; }
+
+ private:
+  DeviceLimits limits_;
+  Wrench out_;
+  Vec3 last_point_{0.0};
+  bool started_ = false;
 };
 
 class HapticRenderer {
@@ -48,6 +74,7 @@ class HapticRenderer {
 
   RenderSettings settings_;
   ContinuityFilter continuity_;
+  StiffnessLimit stiffness_;  // a free tool's, when its device declared a limit
   coupling::OffsetRate offset_rate_;  // a constrained tool's damper
   std::vector<double> lambda_;        // the proxy solve's, reserved
   bool rendered_ = false;             // the last tick rendered a trusted snapshot

@@ -42,8 +42,9 @@ std::unique_ptr<Threads::Tool> Threads::make_tool(std::uint32_t i) {
     tool->snapshots.buffer(k).contacts.reserve(capacity);
     if (tool->constrained) tool->snapshots.buffer(k).constraints.reserve(capacity);
   }
+  const DeviceLimits limits = b.device.attached() ? b.device->limits() : DeviceLimits{};
   tool->renderer = HapticRenderer({world_.settings_.force, tool->constrained, tool->coupling,
-                                   tool->reference_local, tool->radius, capacity, b.pose});
+                                   tool->reference_local, tool->radius, capacity, b.pose, limits});
   if (settings_.trace_capacity > 0)
     tool->trace = std::make_unique<TraceRing<TraceSample>>(
         static_cast<std::size_t>(std::min(settings_.trace_capacity, kMaxTraceCapacity)));

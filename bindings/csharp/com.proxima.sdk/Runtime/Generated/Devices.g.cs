@@ -21,6 +21,12 @@ namespace Proxima
         // (clipped is set when the safety gate changed it). May be NULL.
         public IntPtr WriteWrench;
         public IntPtr UserData;
+        // What the device renders stably at the haptic rate, as CHAI3D's cHapticDeviceInfo declares it: the
+        // stiffest contact in N/m (>= 0; 0, the default: no limit) and the damping in N s/m it needs (>= 0,
+        // default 0). The force it is handed never grows faster than maxStiffness per metre the tool moves,
+        // and a constrained tool's coupling is no stiffer (docs/devices.md, "A device's limits").
+        public double MaxStiffness;
+        public double Damping;
         public int InternalValue;
         public int Reserved;
     }

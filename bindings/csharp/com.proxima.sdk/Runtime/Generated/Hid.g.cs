@@ -99,6 +99,11 @@ namespace Proxima
         // other way, 0 (default) the firmware's known convention (the Arduino library's is -1, every other
         // +1).
         public int ForceSignY;
+        // What the device renders stably, as proxDeviceDef.maxStiffness and damping say (N/m and N s/m; 0,
+        // the default: no limit, no damping). A force-feedback stick's firmware and motor decide it: measure
+        // it.
+        public double MaxStiffness;
+        public double Damping;
         readonly int internalValue;
         readonly int reserved;
     }
