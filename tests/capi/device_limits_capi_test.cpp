@@ -114,3 +114,34 @@ TEST_F(DeviceLimits, BadLimitsAreRefusedByName) {
   d.damping = 2.0;
   EXPECT_OK(proxBody_SetDevice(tool, &d));
 }
+
+// Each kind declares its own: an application's device in its def, a
+// streamed device (an engine's hand, perhaps on a grounded device) in its
+// def, a HID device in its def (hid_pid_device_test.cpp); a scripted path
+// has none. A built-in device's def hands its limits back, and the tool
+// that takes the def as it came reads them from the device.
+TEST_F(DeviceLimits, EveryKindOfDeviceDeclaresItsOwn) {
+  proxStreamDeviceDef sd = proxDefaultStreamDeviceDef();
+  EXPECT_EQ(sd.maxStiffness, 0.0);
+  EXPECT_EQ(sd.damping, 0.0);
+  proxStreamDeviceId stream{};
+  sd.maxStiffness = -1.0;
+  EXPECT_FAILS(proxWorld_CreateStreamDevice(world, &sd, &stream), PROX_ERROR_INVALID_ARGUMENT, "maxStiffness");
+  sd.maxStiffness = 250.0;
+  sd.damping = 0.5;
+  ASSERT_OK(proxWorld_CreateStreamDevice(world, &sd, &stream));
+  proxDeviceDef d{};
+  ASSERT_OK(proxStreamDevice_GetDeviceDef(stream, &d));
+  EXPECT_EQ(d.maxStiffness, 250.0);
+  EXPECT_EQ(d.damping, 0.5);
+  EXPECT_OK(proxBody_SetDevice(tool, &d));
+  const proxPose path = capi_test::at(0.2);
+  proxScriptedDeviceDef scd = proxDefaultScriptedDeviceDef();
+  scd.poses = &path;
+  scd.poseCount = 1;
+  proxScriptedDeviceId scripted{};
+  ASSERT_OK(proxWorld_CreateScriptedDevice(world, &scd, &scripted));
+  ASSERT_OK(proxScriptedDevice_GetDeviceDef(scripted, &d));
+  EXPECT_EQ(d.maxStiffness, 0.0);
+  EXPECT_EQ(proxDefaultDeviceDef().maxStiffness, 0.0);
+}

@@ -38,7 +38,7 @@ _Static_assert(sizeof(proxIntersectionStats) == 40, "proxIntersectionStats");
 _Static_assert(sizeof(proxPatchSettings) == 24, "proxPatchSettings");
 _Static_assert(sizeof(proxPatchStats) == 32, "proxPatchStats");
 _Static_assert(sizeof(proxStreamDeviceId) == 16, "proxStreamDeviceId");
-_Static_assert(sizeof(proxStreamDeviceDef) == 40, "proxStreamDeviceDef");
+_Static_assert(sizeof(proxStreamDeviceDef) == 56, "proxStreamDeviceDef");
 _Static_assert(sizeof(proxStreamDeviceStats) == 80, "proxStreamDeviceStats");
 _Static_assert(sizeof(proxStreamMode) == 4, "enums are 32-bit");
 _Static_assert(sizeof(proxHapticTiming) == 4, "enums are 32-bit");

@@ -137,6 +137,10 @@ typedef struct proxStreamDeviceDef {
   double
       maxExtrapolation; /* s, >= 0: EXTRAPOLATE's furthest prediction past the newest sample (default 0.02) */
   double staleAfter; /* s, > 0: nothing pushed for this long: no pose, the force fades out (default 0.05) */
+  /* What the device behind the stream renders stably, as
+   * proxDeviceDef.maxStiffness and damping say (0, the default: no limit). */
+  double maxStiffness;
+  double damping;
   int32_t internalValue;
   int32_t reserved;
 } proxStreamDeviceDef;

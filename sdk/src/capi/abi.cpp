@@ -39,7 +39,7 @@ static_assert(sizeof(proxIntersectionStats) == 40, "ABI");
 static_assert(sizeof(proxPatchSettings) == 24, "ABI");
 static_assert(sizeof(proxPatchStats) == 32, "ABI");
 static_assert(sizeof(proxStreamDeviceId) == 16, "ABI");
-static_assert(sizeof(proxStreamDeviceDef) == 40, "ABI");
+static_assert(sizeof(proxStreamDeviceDef) == 56, "ABI");
 static_assert(sizeof(proxStreamDeviceStats) == 80, "ABI");
 static_assert(sizeof(proxStreamMode) == 4, "ABI");
 static_assert(sizeof(proxHapticTiming) == 4, "ABI");

@@ -91,6 +91,9 @@ proxResult proxWorld_CreateStreamDevice(proxWorldId world, const proxStreamDevic
     s.delay = def->delay;
     s.max_extrapolation = def->maxExtrapolation;
     s.stale_after = def->staleAfter;
+    need_non_negative(def->maxStiffness, "def->maxStiffness");
+    need_non_negative(def->damping, "def->damping");
+    s.limits = {def->maxStiffness, def->damping};
 
     const DeviceSlot slot = add_device(world, kStream, std::make_shared<runtime::StreamDevice>(s));
     *device = {slot.index1, slot.generation, world};

@@ -21,8 +21,9 @@ proxWorldDef proxDefaultWorldDef(void) {
 namespace {
 
 // The oldest minor version of this major one whose public structs are laid
-// out as this library's: 0.4 grew proxDeviceDef (maxStiffness, damping),
-// so a 0.3 program's defs would be read past their end.
+// out as this library's: 0.4 grew proxDeviceDef and proxStreamDeviceDef
+// (maxStiffness, damping), so a 0.3 program's defs would be read past
+// their end.
 constexpr int32_t kOldestCompatibleMinor = 4;
 
 }  // namespace

@@ -27,6 +27,8 @@ struct StreamSettings {
   // s: with nothing pushed for this long the device has no pose (the safety
   // gate fades the force out).
   double stale_after = 0.05;
+  // What the device behind the stream renders stably (none by default).
+  DeviceLimits limits;
 };
 
 // One timestamped pose, as pushed.
@@ -80,6 +82,7 @@ class StreamDevice final : public HapticDevice {
   bool read_pose(DevicePose* pose) override;
   bool read_pose_at(double now, DevicePose* pose);
   void write_wrench(const DeviceWrench& wrench) override;
+  DeviceLimits limits() const override { return settings_.limits; }
   // From then on, no pose.
   void close() override { closed_.store(true, std::memory_order_release); }
 

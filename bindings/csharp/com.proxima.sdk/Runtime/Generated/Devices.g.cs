@@ -131,6 +131,10 @@ namespace Proxima
         public double MaxExtrapolation;
         // s, > 0: nothing pushed for this long: no pose, the force fades out (default 0.05)
         public double StaleAfter;
+        // What the device behind the stream renders stably, as proxDeviceDef.maxStiffness and damping say (0,
+        // the default: no limit).
+        public double MaxStiffness;
+        public double Damping;
         readonly int internalValue;
         readonly int reserved;
     }
