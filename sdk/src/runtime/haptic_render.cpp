@@ -21,27 +21,25 @@ HapticRenderer::HapticRenderer(const RenderSettings& settings)
   }
 }
 
-Wrench StiffnessLimit::step(const Wrench& target, const Vec3& point, double dt, const Wrench& from) {
+Wrench StiffnessLimit::step(const Wrench& target, const Vec3& point, double dt, const Wrench& current) {
   if (!started_) {
-    out_ = from;
     last_point_ = point;
     started_ = true;
   }
   const Vec3 moved = point - last_point_;
   last_point_ = point;
   Wrench next = target;
-  if (limits_.max_stiffness > 0.0 && glm::length(target.force) > glm::length(out_.force)) {
+  if (limits_.max_stiffness > 0.0 && glm::length(target.force) > glm::length(current.force)) {
     // Growing: by at most the device's stiffness times the motion; the
     // torque keeps pace with the force.
-    const Vec3 gap = target.force - out_.force;
+    const Vec3 gap = target.force - current.force;
     const double budget = limits_.max_stiffness * glm::length(moved), size = glm::length(gap);
     if (size > budget) {
       const double f = budget / size;
-      next.force = out_.force + gap * f;
-      next.torque = out_.torque + (target.torque - out_.torque) * f;
+      next.force = current.force + gap * f;
+      next.torque = current.torque + (target.torque - current.torque) * f;
     }
   }
-  out_ = next;
   // Damping against motion into the force (pushing it in), never pulling.
   const double size = glm::length(next.force);
   if (limits_.damping > 0.0 && size > 0.0 && dt > 0.0) {

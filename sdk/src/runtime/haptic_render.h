@@ -41,14 +41,14 @@ class StiffnessLimit {
   explicit StiffnessLimit(const DeviceLimits& limits = {}) : limits_(limits) {}
   bool active() const { return limits_.max_stiffness > 0.0 || limits_.damping > 0.0; }
   // The wrench for the device, from the contacts' `target` with the
-  // reference point at `point`; `from` is what the device has when the
-  // limit (re)starts.
-  Wrench step(const Wrench& target, const Vec3& point, double dt, const Wrench& from);
+  // reference point at `point`; `current` is what the device has now (the
+  // safety gate's last output): the growth is measured from it, so what
+  // the device is handed grows within the limit whatever the gate held back.
+  Wrench step(const Wrench& target, const Vec3& point, double dt, const Wrench& current);
   void reset() { started_ = false; }
 
  private:
   DeviceLimits limits_;
-  Wrench out_;
   Vec3 last_point_{0.0};
   bool started_ = false;
 };
