@@ -4,7 +4,7 @@
 // the deterministic step. Prints p50/p99/max over the ticks in contact.
 //
 //   proxima_coupling_bench [--scene bunny|cad|saw]... [--speed M_PER_S]
-#include "coupling/scenes.h"
+#include "coupling_scenes.h"
 
 #include <algorithm>
 #include <chrono>

@@ -3,7 +3,7 @@
 // haptic tick per World::step; the proxy's exact distance (the kernel's
 // branch and bound, as proxBody_GetDistance measures it) checked at every
 // tick.
-#include "coupling/scenes.h"
+#include "coupling_scenes.h"
 
 #include "contact/global_search.h"
 #include "coupling/clearance.h"

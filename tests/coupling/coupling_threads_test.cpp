@@ -2,7 +2,7 @@
 // device pushes the bunny through the other bunny and back in real time;
 // the game thread samples the proxy as a renderer would. Its own program:
 // it counts allocations on the haptic thread (support/marked_threads.h).
-#include "coupling/scenes.h"
+#include "coupling_scenes.h"
 
 #include "coupling/clearance.h"
 #include "runtime/scripted_device.h"

@@ -1,5 +1,5 @@
-// Scenes and scripted device paths for the constrained tool's tests and
-// benchmark: an obstacle, a tool, and a path of device poses, one per
+// Scenes and scripted device paths for the constrained tool's benchmark
+// and tests: an obstacle, a tool, and a path of device poses, one per
 // haptic tick, replayed through the deterministic step.
 #pragma once
 

@@ -1,4 +1,4 @@
-#include "coupling/scenes.h"
+#include "coupling_scenes.h"
 
 #include "io/obj.h"
 #if PROX_WITH_GLTF
