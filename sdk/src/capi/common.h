@@ -65,10 +65,6 @@ struct WorldEntry {
   uint32_t generation = 0;
   std::unique_ptr<runtime::World> world;
   std::thread::id owner;
-  // proxMesh_GetWarnings: what loading each mesh's file skipped, by mesh
-  // handle (index << 32 | generation); meshes without warnings are absent.
-  // Under g_worlds_mutex, like the registry.
-  std::map<uint64_t, std::string> mesh_warnings;
 };
 
 extern std::mutex g_worlds_mutex;  // guards the registry's shape, not the worlds

@@ -23,17 +23,14 @@ namespace {
 
 proxMeshId make_mesh_id(proxWorldId world, runtime::Handle h) { return {h.index + 1, h.generation, world}; }
 
-uint64_t warnings_key(const proxMeshId& mesh) { return uint64_t{mesh.index1 - 1} << 32 | mesh.generation; }
-
 #if PROX_WITH_GLTF
 // Records what loading `mesh` skipped, for proxMesh_GetWarnings (only the
 // glTF reader skips anything).
-void keep_warnings(const proxMeshId& mesh, const std::vector<std::string>& warnings) {
+void keep_warnings(runtime::World& world, const proxMeshId& mesh, const std::vector<std::string>& warnings) {
   if (warnings.empty()) return;
   std::string text;
   for (const std::string& w : warnings) text += w + "\n";
-  std::lock_guard<std::mutex> lock(g_worlds_mutex);
-  g_worlds[mesh.world.index1 - 1].mesh_warnings[warnings_key(mesh)] = std::move(text);
+  world.set_mesh_warnings({mesh.index1 - 1, mesh.generation}, std::move(text));
 }
 #endif
 
@@ -102,7 +99,7 @@ proxMeshId load_mesh(proxWorldId world, runtime::World& w, const std::string& na
                                     m.indices.data(), static_cast<uint32_t>(m.indices.size() / 3)},
                                    name);
     if (m.rig) attach_rig(w, id, m.rig);
-    keep_warnings(id, warnings);
+    keep_warnings(w, id, warnings);
     return id;
   }
 #endif
@@ -164,8 +161,6 @@ proxResult proxMesh_Destroy(proxMeshId mesh) {
     const runtime::Handle h = mesh_of(mesh, w);
     Status s;
     if (!w->destroy_mesh(h, s)) fail(PROX_ERROR_INVALID_ARGUMENT, s.message());
-    std::lock_guard<std::mutex> lock(g_worlds_mutex);
-    g_worlds[mesh.world.index1 - 1].mesh_warnings.erase(warnings_key(mesh));
   });
 }
 
@@ -239,14 +234,8 @@ proxResult proxMesh_GetWarnings(proxMeshId mesh, char* buffer, int32_t capacity,
     if (capacity > 0 && buffer == nullptr)
       fail(PROX_ERROR_INVALID_ARGUMENT, "buffer is NULL but capacity is > 0");
     runtime::World* w = nullptr;
-    mesh_of(mesh, w);
-    std::string text;
-    {
-      std::lock_guard<std::mutex> lock(g_worlds_mutex);
-      const auto& warnings = g_worlds[mesh.world.index1 - 1].mesh_warnings;
-      const auto it = warnings.find(warnings_key(mesh));
-      if (it != warnings.end()) text = it->second;
-    }
+    const runtime::Handle h = mesh_of(mesh, w);
+    std::string text = w->mesh_warnings(h);
     if (text.size() > static_cast<std::size_t>(INT32_MAX - 1)) text.resize(INT32_MAX - 1);
     *length = static_cast<int32_t>(text.size());
     if (capacity == 0) {

@@ -75,7 +75,6 @@ proxResult proxDestroyWorld(proxWorldId world) {
     {
       std::lock_guard<std::mutex> lock(g_worlds_mutex);
       doomed = std::move(g_worlds[world.index1 - 1].world);
-      g_worlds[world.index1 - 1].mesh_warnings.clear();
     }
     // No device callback runs once the threads stop; then no other thread
     // may still hold one of the world's streamed devices.

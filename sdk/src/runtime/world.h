@@ -129,6 +129,10 @@ class World {
   // Fails (false) while bodies use the mesh.
   bool destroy_mesh(Handle h, Status& status);
   const Mesh& mesh(Handle h) const { return meshes_[h.index].data->mesh; }
+  // What reading a mesh's file skipped (one line each; empty: nothing), for
+  // its owner to read back. Game thread.
+  void set_mesh_warnings(Handle h, std::string warnings) { meshes_[h.index].warnings = std::move(warnings); }
+  const std::string& mesh_warnings(Handle h) const { return meshes_[h.index].warnings; }
   const Snch& snch(Handle h) const { return *meshes_[h.index].data->snch; }
   // Moves a mesh's vertices (x, y, z per welded vertex, in Mesh order; the
   // same count), keeping its topology: a new shape of the mesh, its
@@ -257,6 +261,7 @@ class World {
     std::shared_ptr<const MeshData> data;  // the mesh's current shape
     std::shared_ptr<MeshRecycler> recycler;  // its retired shapes' storage
     int users = 0;
+    std::string warnings;  // the game thread's
   };
   struct BodySlot {
     std::uint32_t generation = 0;

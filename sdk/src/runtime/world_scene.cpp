@@ -64,6 +64,7 @@ Handle World::create_mesh(const MeshInput& input, Status& status) {
   slot.data = std::move(shape);
   slot.recycler = std::move(recycler);
   slot.users = 0;
+  slot.warnings.clear();
   return {i, slot.generation};
 }
 
@@ -85,6 +86,7 @@ bool World::destroy_mesh(Handle h, Status& status) {
   slot.alive = false;
   gone = std::move(slot.data);
   recycler = std::move(slot.recycler);
+  slot.warnings.clear();
   rigs_.erase(h.index);
   return true;
 }
