@@ -29,6 +29,24 @@ const char* profile_name(proxHidProfile p) {
   }
 }
 
+// proxHidForceEffect by name, as docs/devices.md has them.
+const char* effect_name(proxHidForceEffect e) {
+  switch (e) {
+    case PROX_HID_EFFECT_PLAYING:
+      return "playing";
+    case PROX_HID_EFFECT_FULL:
+      return "full";
+    case PROX_HID_EFFECT_ERROR:
+      return "error";
+    case PROX_HID_EFFECT_NO_ANSWER:
+      return "no answer";
+    case PROX_HID_EFFECT_STOPPED:
+      return "stopped";
+    default:
+      return "none";
+  }
+}
+
 std::string hex4(uint16_t v) {
   char s[8];
   std::snprintf(s, sizeof s, "%04x", v);
@@ -167,9 +185,9 @@ void print_hid_stats(const HidRun& hid) {
       static_cast<unsigned long long>(s.outputsWritten), static_cast<unsigned long long>(s.failedWrites),
       static_cast<unsigned long long>(s.disconnects), static_cast<unsigned long long>(s.reconnects));
   if (s.profile == PROX_HID_PID_JOYSTICK || s.profile == PROX_HID_PID_WHEEL)
-    std::printf("hid: force feedback: %llu effects created, %llu force updates, largest magnitude %.3f\n",
+    std::printf("hid: force feedback: %llu effects created, %llu force updates, largest magnitude %.3f; effect %s\n",
                 static_cast<unsigned long long>(s.effectsCreated), static_cast<unsigned long long>(s.forceUpdates),
-                s.maxForceMagnitude);
+                s.maxForceMagnitude, effect_name(s.forceEffect));
 }
 
 void hid_json(const HidRun& hid, Json& j) {
@@ -193,6 +211,7 @@ void hid_json(const HidRun& hid, Json& j) {
   j.key("force_updates").value(count(s.forceUpdates));
   j.key("effects_created").value(count(s.effectsCreated));
   j.key("max_force_magnitude").value(s.maxForceMagnitude);
+  j.key("force_effect").value(effect_name(s.forceEffect));
   j.key("first_pose");
   pose_json(j, hid.first);
   j.key("last_pose");

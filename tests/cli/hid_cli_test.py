@@ -104,6 +104,17 @@ class HidCliTest(unittest.TestCase):
             self.assertIn(f"{ids}  {profile}", r.stdout)
             self.assertIn(f"/dev/hidraw{i}", r.stdout)
 
+    def test_devices_lists_the_force_feedback_sticks(self):
+        out = os.path.join(self.dir.name, "devices.json")
+        r, _ = self.emulate(list(PID) + ["openffboard_1axis"], [], "devices", "--json", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(out) as f:
+            listed = json.load(f)["devices"]
+        self.assertEqual([d["profile"] for d in listed], ["pid-joystick", "pid-joystick", "pid-wheel"])
+        self.assertEqual([f"{d['vendor_id']}:{d['product_id']}" for d in listed],
+                         [PID["openffboard"][0], PID["arduino_ffb"][0], "1209:ffb0"])
+        self.assertIn("pid-wheel", r.stdout)
+
     def test_devices_with_none_present(self):
         r, _ = self.emulate([], [], "devices")
         self.assertEqual(r.returncode, 0, r.stderr)
@@ -169,6 +180,7 @@ class HidCliTest(unittest.TestCase):
                 self.assertGreaterEqual(hid["reports_read"], 1)
                 self.assertEqual((hid["malformed"], hid["failed_writes"]), (0, 0))
                 self.assertEqual(hid["effects_created"], 1)
+                self.assertEqual(hid["force_effect"], "playing")
                 self.assertGreater(hid["force_updates"], 0)
                 self.assertGreater(hid["max_force_magnitude"], 0.0, "the contact was pushed back")
                 self.assertLessEqual(hid["max_force_magnitude"], 1.0)
