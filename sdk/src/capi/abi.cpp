@@ -44,3 +44,20 @@ static_assert(sizeof(proxStreamDeviceStats) == 80, "ABI");
 static_assert(sizeof(proxStreamMode) == 4, "ABI");
 static_assert(sizeof(proxHapticTiming) == 4, "ABI");
 static_assert(sizeof(proxToolMode) == 4, "ABI");
+static_assert(sizeof(proxContactPatch) == 32, "ABI");
+static_assert(sizeof(proxForceCurve) == 4 && sizeof(proxHapticFlag) == 4 && sizeof(proxSleepTimer) == 4, "ABI");
+static_assert(sizeof(proxVersion) == 12, "ABI");
+
+// The optional headers' structs, where the library has them.
+#if PROX_WITH_HIDAPI
+#include <proxima/proxima_hid.h>
+static_assert(sizeof(proxHidDeviceInfo) == 464 && sizeof(proxHidDeviceId) == 16, "ABI");
+static_assert(sizeof(proxHidDeviceDef) == 232 && sizeof(proxHidDeviceStats) == 120, "ABI");
+static_assert(sizeof(proxHidProfile) == 4 && sizeof(proxHidForceEffect) == 4, "ABI");
+#endif
+#if PROX_WITH_OPENXR
+#include <proxima/proxima_openxr.h>
+static_assert(sizeof(proxXrDeviceId) == 8 && sizeof(proxXrDeviceDef) == 240 && sizeof(proxXrDeviceStats) == 88,
+              "ABI");
+static_assert(sizeof(proxXrPoseMode) == 4 && sizeof(proxXrTimeSource) == 4, "ABI");
+#endif
