@@ -100,21 +100,21 @@ struct Settings {
   proxMethod method = PROX_METHOD_PRECISE;
   double cutoff = 0.0;
   proxForceSettings force{};
+  proxForcePreset preset = PROX_FORCE_PRESET_HARD;  // the force settings' preset
 };
 
 inline Settings preset(proxForcePreset p) {
   Settings s;
+  s.preset = p;
   check(proxGetForcePreset(p, &s.force, &s.cutoff));
   return s;
 }
 
-// The settings at another cutoff: the safety distance and decay length keep
-// their ratios to the cutoff (the maximum force and torque stay).
+// The settings' preset at another cutoff (the library scales it:
+// proxGetForcePresetAt).
 inline Settings scaled_to(Settings s, double cutoff) {
-  const double k = cutoff / s.cutoff;
   s.cutoff = cutoff;
-  s.force.safetyDistance *= k;
-  s.force.decayLength *= k;
+  check(proxGetForcePresetAt(s.preset, cutoff, &s.force));
   return s;
 }
 

@@ -1,7 +1,6 @@
 """Worlds over the C API; their meshes and bodies are in _bodies.py."""
 
 import atexit
-import dataclasses
 import os
 import threading
 import warnings
@@ -45,12 +44,15 @@ class World:
         if isinstance(force, str):
             settings, default_cutoff = force_preset(force)
             if cutoff is not None:
-                # A preset is a shape relative to its cutoff: at another
-                # cutoff its safety distance and decay length scale with it
-                # (as the CLI's --cutoff does), so any positive cutoff works.
-                k = real(cutoff, "cutoff") / default_cutoff
-                settings = dataclasses.replace(settings, safety_distance=settings.safety_distance * k,
-                                               decay_length=settings.decay_length * k)
+                # A preset is a shape relative to its cutoff: the library
+                # scales it to another (as the CLI's --cutoff does), so any
+                # positive cutoff works.
+                # A cutoff that is none is left for proxCreateWorld to name.
+                wanted = real(cutoff, "cutoff")
+                if 0.0 < wanted < float("inf"):
+                    at = ffi.new("proxForceSettings*")
+                    check(lib.proxGetForcePresetAt(enum_value("proxForcePreset", force, "force"), wanted, at))
+                    settings = from_c(ForceSettings, at[0])
         elif isinstance(force, ForceSettings):
             settings, default_cutoff = force, d.cutoff
         else:

@@ -28,6 +28,11 @@ typedef enum proxForcePreset {
 /* The force settings and cutoff of a preset (docs/cli.md, "Force
  * settings"), for a proxWorldDef's `force` and `cutoff`. Any thread. */
 PROX_API proxResult proxGetForcePreset(proxForcePreset preset, proxForceSettings* force, double* cutoff);
+/* The preset at another cutoff (> 0, finite): a preset is a shape relative
+ * to its cutoff, so its safety distance and decay length scale with it (the
+ * maximum force and torque stay). The one place a preset is scaled: the
+ * CLI's --cutoff and the bindings' worlds call it. Any thread. */
+PROX_API proxResult proxGetForcePresetAt(proxForcePreset preset, double cutoff, proxForceSettings* force);
 
 typedef struct proxMeshStats {
   uint32_t inputVertices;     /* as given, before welding */

@@ -8,24 +8,45 @@ using namespace prox::capi;
 
 extern "C" {
 
+namespace {
+
+ForceSettings preset_of(proxForcePreset preset) {
+  switch (enum_value(preset)) {
+    case PROX_FORCE_PRESET_HARD:
+      return hard_force_settings();
+    case PROX_FORCE_PRESET_SOFT:
+      return soft_force_settings();
+    default:
+      fail(PROX_ERROR_INVALID_ARGUMENT, "preset is not a proxForcePreset");
+  }
+}
+
+proxForceSettings to_c(const ForceSettings& f) {
+  return {f.curve == ForceCurve::Linear ? PROX_FORCE_LINEAR : PROX_FORCE_EXPONENTIAL, f.max_force, f.max_torque,
+          f.safety_distance, f.decay_length};
+}
+
+}  // namespace
+
 proxResult proxGetForcePreset(proxForcePreset preset, proxForceSettings* force, double* cutoff) {
   return guard("proxGetForcePreset", [&] {
     need(force, "force");
     need(cutoff, "cutoff");
-    ForceSettings f;
-    switch (enum_value(preset)) {
-      case PROX_FORCE_PRESET_HARD:
-        f = hard_force_settings();
-        break;
-      case PROX_FORCE_PRESET_SOFT:
-        f = soft_force_settings();
-        break;
-      default:
-        fail(PROX_ERROR_INVALID_ARGUMENT, "preset is not a proxForcePreset");
-    }
-    *force = {f.curve == ForceCurve::Linear ? PROX_FORCE_LINEAR : PROX_FORCE_EXPONENTIAL, f.max_force,
-              f.max_torque, f.safety_distance, f.decay_length};
+    const ForceSettings f = preset_of(preset);
+    *force = to_c(f);
     *cutoff = f.cutoff;
+  });
+}
+
+proxResult proxGetForcePresetAt(proxForcePreset preset, double cutoff, proxForceSettings* force) {
+  return guard("proxGetForcePresetAt", [&] {
+    need(force, "force");
+    need_positive(cutoff, "cutoff");
+    ForceSettings f = preset_of(preset);
+    const double k = cutoff / f.cutoff;
+    f.safety_distance *= k;
+    f.decay_length *= k;
+    *force = to_c(f);
   });
 }
 

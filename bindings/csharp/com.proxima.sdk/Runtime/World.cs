@@ -35,12 +35,12 @@ namespace Proxima
             Native.Check(Native.proxGetForcePreset(settings.Force, out def.Force, out def.Cutoff));
             if (!double.IsNaN(settings.Cutoff))
             {
-                // A preset is a shape relative to its cutoff: at another cutoff its safety
-                // distance and decay length scale with it (as the CLI's --cutoff does).
-                double k = settings.Cutoff / def.Cutoff;
+                // A preset is a shape relative to its cutoff: the library scales it to
+                // another (as the CLI's --cutoff does). A cutoff that is none is left for
+                // proxCreateWorld to name.
+                if (settings.Cutoff > 0.0 && !double.IsInfinity(settings.Cutoff))
+                    Native.Check(Native.proxGetForcePresetAt(settings.Force, settings.Cutoff, out def.Force));
                 def.Cutoff = settings.Cutoff;
-                def.Force.SafetyDistance *= k;
-                def.Force.DecayLength *= k;
             }
             if (settings.CustomForce.HasValue) def.Force = settings.CustomForce.Value;
             Native.Check(Native.proxCreateWorld(ref def, out id));

@@ -113,6 +113,8 @@ namespace Proxima
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxGetForcePreset(ForcePreset preset, out ForceSettings force, out double cutoff);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxGetForcePresetAt(ForcePreset preset, double cutoff, out ForceSettings force);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxMesh_GetStats(MeshId mesh, out MeshStats stats);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxWorld_GetSearchStats(WorldId world, out SearchStats stats);
