@@ -179,7 +179,9 @@ Status parse_hid_descriptor(const std::uint8_t* data, std::size_t size, HidDescr
         if (!have_min) return error_at(i, "Usage Maximum without a Usage Minimum");
         if (full < usage_min || full - usage_min >= kMaxUsages - usages.size())
           return error_at(i, "usage range out of order or too large");
-        for (std::uint32_t u = usage_min; u <= full; ++u) usages.push_back(u);
+        // Counted, not `u <= full`: a range ending at 0xFFFFFFFF would wrap
+        // and never end (the fuzzer's find).
+        for (std::uint32_t k = 0; k <= full - usage_min; ++k) usages.push_back(usage_min + k);
         have_min = false;
       }
     }  // other local items (designators, strings, delimiters): not needed
