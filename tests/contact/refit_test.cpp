@@ -2,6 +2,7 @@
 // what it must, and the precise search on it finds exactly what it finds on
 // a hierarchy built afresh for the deformed mesh, and what the brute-force
 // reference finds.
+#include "common/worker_pool.h"
 #include "support/scenes.h"
 
 #include <gtest/gtest.h>
@@ -171,6 +172,44 @@ TEST(Refit, BoundsHoldAndTheSearchIsTheFreshTreesAndTheReferences) {
   EXPECT_GT(total.reference, 10);
   EXPECT_EQ(total.recalled, total.reference);
   EXPECT_EQ(total.confirmed, total.found);
+}
+
+// The same bits from one thread and from several: each node and each
+// normal is computed as the serial refit computes it, and every node is
+// refitted once (a node missed keeps its old, wrong bounds).
+TEST(Refit, OnWorkersTheNormalsAndTheTreeAreTheSerialOnesBitForBit) {
+  const auto model = bunny();
+  ASSERT_TRUE(model);
+  const std::vector<double> xyz = waved(model->mesh, 0.005, 0.08, 1.0);
+  const Deformed serial = deform(*model, xyz);
+  for (unsigned threads : {2u, 3u}) {
+    WorkerPool pool(threads);
+    Mesh mesh = model->mesh;
+    ASSERT_TRUE(mesh.set_vertices(xyz.data(), mesh.vertex_count(), &pool));
+    for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v)
+      ASSERT_EQ(mesh.vertex_normal(v), serial.refitted.mesh.vertex_normal(v)) << "vertex " << v;
+    for (std::uint32_t t = 0; t < mesh.triangle_count(); ++t)
+      ASSERT_EQ(mesh.face_normal(t), serial.refitted.mesh.face_normal(t)) << "triangle " << t;
+    EXPECT_EQ(mesh.longest_edge(), serial.refitted.mesh.longest_edge());
+    Snch snch(*model->snch);
+    snch.refit(mesh, &pool);
+    const Snch& expected = *serial.refitted.snch;
+    ASSERT_EQ(snch.nodes().size(), expected.nodes().size());
+    for (std::uint32_t i = 0; i < snch.nodes().size(); ++i) {
+      const SnchNode &a = snch.node(i), &b = expected.node(i);
+      ASSERT_EQ(a.center, b.center) << "node " << i;
+      ASSERT_EQ(a.radius, b.radius) << "node " << i;
+      ASSERT_EQ(a.cone.axis, b.cone.axis) << "node " << i;
+      ASSERT_EQ(a.cone.cos, b.cone.cos) << "node " << i;
+      ASSERT_EQ(a.cone.sin, b.cone.sin) << "node " << i;
+      ASSERT_EQ(snch.box(i).center, expected.box(i).center) << "node " << i;
+      ASSERT_EQ(snch.box(i).half, expected.box(i).half) << "node " << i;
+    }
+    for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v)
+      ASSERT_EQ(snch.vertex_spread(v), expected.vertex_spread(v)) << "vertex " << v;
+    EXPECT_EQ(snch.stats().degradation, expected.stats().degradation);
+    expect_bounds_hold(mesh, snch);
+  }
 }
 
 TEST(Refit, AFoldedMeshDegradesPastTheRebuildLimit) {

@@ -1,5 +1,6 @@
 #include "mesh/mesh.h"
 
+#include "common/worker_pool.h"
 #include "geometry/predicates.h"
 
 #include <glm/geometric.hpp>
@@ -227,8 +228,6 @@ Mesh Mesh::build(const MeshInput& in, Status& status) {
   stats.vertices = vertex_count;
   stats.triangles = triangle_count;
 
-  mesh.compute_geometry();
-
   // Vertex -> triangles, by counting sort: ascending because triangles are
   // visited in order.
   topo.vertex_tri_offsets.assign(std::size_t{vertex_count} + 1, 0);
@@ -287,10 +286,11 @@ Mesh Mesh::build(const MeshInput& in, Status& status) {
       run = it;
     }
   }
+  mesh.compute_geometry();
   return mesh;
 }
 
-void Mesh::compute_geometry() {
+void Mesh::compute_geometry(WorkerPool* pool) {
   const std::uint32_t vertex_count = this->vertex_count();
   const std::uint32_t triangle_count = this->triangle_count();
   bounds_.min = bounds_.max = vertices_[0];
@@ -298,50 +298,88 @@ void Mesh::compute_geometry() {
     bounds_.min = glm::min(bounds_.min, p);
     bounds_.max = glm::max(bounds_.max, p);
   }
-
-  // Face normals, and vertex normals weighted by the angle at the vertex: a
-  // face split into more triangles does not weigh more.
-  face_normals_.assign(triangle_count, Vec3(0.0));
+  // In chunks, on the pool's threads where there is one: first each
+  // triangle's normal and angles, then each vertex's normal from its
+  // triangles' in ascending order, the order a sweep over the triangles
+  // would add them in, so the sums are the same however many threads ran.
+  constexpr std::size_t kChunk = 4096;
+  const auto in_chunks = [pool](std::size_t n, const auto& f) {
+    const std::size_t chunks = (n + kChunk - 1) / kChunk;
+    const auto run = [&](std::size_t k) { f(k * kChunk, std::min(n, (k + 1) * kChunk)); };
+    if (pool != nullptr && pool->size() > 1 && chunks > 1) {
+      pool->run(chunks, run);
+    } else {
+      for (std::size_t k = 0; k < chunks; ++k) run(k);
+    }
+  };
   // Scratch kept by the thread between calls: a deforming mesh's every
   // frame would otherwise allocate it anew.
-  static thread_local std::vector<Vec3> normal_sum;
-  static thread_local std::vector<double> weight_sum;
-  normal_sum.assign(vertex_count, Vec3(0.0));
-  weight_sum.assign(vertex_count, 0.0);
+  struct ChunkResult {
+    std::uint32_t zero_area = 0;
+    double longest = 0.0, longest2 = 0.0;  // the longest edge and its square
+  };
+  static thread_local std::vector<std::array<double, 3>> corner_angle;
+  static thread_local std::vector<ChunkResult> chunk_result;
+  face_normals_.resize(triangle_count);
+  corner_angle.resize(triangle_count);
+  chunk_result.assign((triangle_count + kChunk - 1) / kChunk, ChunkResult{});
+  std::array<double, 3>* angles = corner_angle.data();
+  ChunkResult* results = chunk_result.data();
+  in_chunks(triangle_count, [&](std::size_t begin, std::size_t end) {
+    ChunkResult r;
+    for (std::size_t t = begin; t < end; ++t) {
+      const auto& tri = topology_->triangles[t];
+      const Vec3 &a = vertices_[tri[0]], &b = vertices_[tri[1]], &c = vertices_[tri[2]];
+      // One square root a triangle where the squares neither over- nor
+      // underflow (length_of's range), three elsewhere.
+      const Vec3 e0 = b - a, e1 = c - b, e2 = a - c;
+      const double l0 = glm::dot(e0, e0), l1 = glm::dot(e1, e1), l2 = glm::dot(e2, e2);
+      const double longest2 = std::max({l0, l1, l2});
+      if (longest2 > 1e-290 && longest2 < 1e290) {
+        if (longest2 > r.longest2) r.longest2 = longest2, r.longest = std::sqrt(longest2);
+      } else {
+        r.longest = std::max({r.longest, length_of(e0), length_of(e1), length_of(e2)});
+        r.longest2 = r.longest * r.longest;
+      }
+      // Weighted by the angle at the vertex: a face split into more
+      // triangles does not weigh more.
+      FaceGeometry g;
+      if (geometry::collinear3d(a, b, c)) {
+        ++r.zero_area;
+      } else {
+        g = face_geometry(a, b, c);
+      }
+      face_normals_[t] = g.normal;
+      angles[t] = {g.angle[0], g.angle[1], g.angle[2]};
+    }
+    results[begin / kChunk] = r;
+  });
   stats_.zero_area_triangles = 0;
   longest_edge_ = 0.0;
-  double longest_edge2 = 0.0;  // its square
-  for (std::uint32_t t = 0; t < triangle_count; ++t) {
-    const auto& tri = topology_->triangles[t];
-    const Vec3 &a = vertices_[tri[0]], &b = vertices_[tri[1]], &c = vertices_[tri[2]];
-    // One square root a triangle where the squares neither over- nor
-    // underflow (length_of's range), three elsewhere.
-    const Vec3 e0 = b - a, e1 = c - b, e2 = a - c;
-    const double l0 = glm::dot(e0, e0), l1 = glm::dot(e1, e1), l2 = glm::dot(e2, e2);
-    const double longest2 = std::max({l0, l1, l2});
-    if (longest2 > 1e-290 && longest2 < 1e290) {
-      if (longest2 > longest_edge2) longest_edge2 = longest2, longest_edge_ = std::sqrt(longest2);
-    } else {
-      longest_edge_ = std::max({longest_edge_, length_of(e0), length_of(e1), length_of(e2)});
-      longest_edge2 = longest_edge_ * longest_edge_;
-    }
-    if (geometry::collinear3d(a, b, c)) {
-      ++stats_.zero_area_triangles;
-      continue;
-    }
-    const FaceGeometry g = face_geometry(a, b, c);
-    face_normals_[t] = g.normal;
-    for (int k = 0; k < 3; ++k) {
-      normal_sum[tri[k]] += g.angle[k] * g.normal;
-      weight_sum[tri[k]] += g.angle[k];
-    }
+  for (const ChunkResult& r : chunk_result) {
+    stats_.zero_area_triangles += r.zero_area;
+    longest_edge_ = std::max(longest_edge_, r.longest);
   }
-  vertex_normals_.assign(vertex_count, Vec3(0.0));
-  for (std::uint32_t v = 0; v < vertex_count; ++v)
-    vertex_normals_[v] = normalized_unless_cancelled(normal_sum[v], weight_sum[v]);
+  vertex_normals_.resize(vertex_count);
+  in_chunks(vertex_count, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) {
+      Vec3 sum(0.0);
+      double weight = 0.0;
+      for (const std::uint32_t* t = vertex_triangles_begin(static_cast<std::uint32_t>(v));
+           t != vertex_triangles_end(static_cast<std::uint32_t>(v)); ++t) {
+        const Vec3& normal = face_normals_[*t];
+        if (normal == Vec3(0.0)) continue;
+        const auto& tri = topology_->triangles[*t];
+        const double angle = angles[*t][tri[0] == v ? 0 : (tri[1] == v ? 1 : 2)];
+        sum += angle * normal;
+        weight += angle;
+      }
+      vertex_normals_[v] = normalized_unless_cancelled(sum, weight);
+    }
+  });
 }
 
-Status Mesh::set_vertices(const double* positions, std::uint32_t count) {
+Status Mesh::set_vertices(const double* positions, std::uint32_t count, WorkerPool* pool) {
   if (count != vertex_count())
     return invalid("vertexCount is " + std::to_string(count) + " but the mesh has " +
                    std::to_string(vertex_count()) + " vertices (after welding)");
@@ -358,7 +396,7 @@ Status Mesh::set_vertices(const double* positions, std::uint32_t count) {
     const double* p = positions + std::size_t{3} * v;
     vertices_[v] = Vec3(p[0], p[1], p[2]);
   }
-  compute_geometry();
+  compute_geometry(pool);
   return Status::ok();
 }
 

@@ -11,6 +11,8 @@
 
 namespace prox {
 
+class WorkerPool;
+
 inline constexpr std::uint32_t kNoTriangle = 0xFFFFFFFFu;
 inline constexpr std::uint32_t kNoVertex = 0xFFFFFFFFu;
 
@@ -54,8 +56,9 @@ class Mesh {
   // Moves the vertices (x, y, z per welded vertex, `count` of them: the
   // same number), keeping the topology; the normals, bounds and longest
   // edge follow. On error (a count that differs, a non-finite coordinate,
-  // named by vertex) nothing changes.
-  Status set_vertices(const double* positions, std::uint32_t count);
+  // named by vertex) nothing changes. With a pool the normals are computed
+  // on its threads, the same bit for bit.
+  Status set_vertices(const double* positions, std::uint32_t count, WorkerPool* pool = nullptr);
 
   std::uint32_t vertex_count() const { return static_cast<std::uint32_t>(vertices_.size()); }
   std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(topology_->triangles.size()); }
@@ -126,8 +129,8 @@ class Mesh {
   static std::shared_ptr<const Topology> empty_topology();
 
   // Bounds, face and vertex normals, zero-area count and longest edge from
-  // the vertices and triangles.
-  void compute_geometry();
+  // the vertices, triangles and the vertex -> triangles adjacency.
+  void compute_geometry(WorkerPool* pool = nullptr);
 
   std::shared_ptr<const Topology> topology_ = empty_topology();
   std::vector<Vec3> vertices_;

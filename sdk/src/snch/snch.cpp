@@ -1,5 +1,7 @@
 #include "snch/snch.h"
 
+#include "common/worker_pool.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -78,32 +80,6 @@ bool vertex_is_open(const Mesh& mesh, std::uint32_t v) {
     }
   }
   return false;
-}
-
-// A refit's inner nodes, bottom-up from their children (children come after
-// their parent, so a reverse sweep meets both before the node).
-void refit_inner(std::vector<SnchNode>& nodes, std::vector<SnchBox>& boxes) {
-  for (std::size_t i = nodes.size(); i-- > 0;) {
-    SnchNode& node = nodes[i];
-    if (node.is_leaf()) continue;
-    const SnchNode &a = nodes[node.first], &b = nodes[node.second];
-    const SnchBox &ba = boxes[node.first], &bb = boxes[node.second];
-    boxes[i] = box_between(glm::min(ba.center - ba.half, bb.center - bb.half),
-                           glm::max(ba.center + ba.half, bb.center + bb.half));
-    // The smallest of three spheres that each hold both children: the
-    // merged one, and two about the box's centre (around the box, and
-    // around the children's spheres).
-    Sphere s = merge(Sphere{a.center, a.radius}, Sphere{b.center, b.radius});
-    const Vec3 centre = boxes[i].center;
-    const double around_box = glm::length(boxes[i].half);
-    const double around_children = std::max(glm::length(a.center - centre) + a.radius,
-                                            glm::length(b.center - centre) + b.radius);
-    const double r = std::min(around_box, around_children);
-    if (r < s.radius) s = {centre, r};
-    node.center = s.center;
-    node.radius = s.radius;
-    node.cone = merge(a.cone, b.cone);
-  }
 }
 
 }  // namespace
@@ -242,14 +218,20 @@ Snch::Snch(const Mesh& mesh) {
   stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
   stats_.memory_bytes = nodes_.capacity() * sizeof(SnchNode) + boxes_.capacity() * sizeof(SnchBox) +
                         vertex_spread_.capacity() * sizeof(double) + open_.capacity();
+  plan_refit();
   // The ratio a refit of the unmoved mesh would measure, so that
   // degradation starts at exactly 1.
   {
     Snch copy;
     copy.nodes_ = nodes_;
     copy.boxes_ = boxes_;
-    refit_inner(copy.nodes_, copy.boxes_);
-    built_ratio_ = copy.radius_ratio();
+    copy.refit_tasks_ = refit_tasks_;
+    copy.refit_top_ = refit_top_;
+    built_ratio_ = copy.sweep(
+        [&copy](std::uint32_t i) {
+          if (!copy.nodes_[i].is_leaf()) copy.refit_inner(i);
+        },
+        nullptr);
   }
   stats_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -268,50 +250,135 @@ void Snch::compute_vertex_spread(const Mesh& mesh) {
   }
 }
 
-double Snch::radius_ratio() const {
-  // Scale-free, and blind to the leaves, which are the triangles' own
-  // spheres whatever the tree: how much room the inner nodes take for the
-  // size of the whole.
-  if (nodes_.empty() || !(nodes_[0].radius > 0.0)) return 1.0;
-  double inner = 0.0;
-  for (const SnchNode& node : nodes_)
-    if (!node.is_leaf()) inner += node.radius;
-  return inner > 0.0 ? inner / nodes_[0].radius : 1.0;
+void Snch::plan_refit() {
+  refit_tasks_.clear();
+  refit_top_.clear();
+  if (nodes_.empty()) return;
+  // Each subtree's last node: a leaf is its own, an inner node's is its
+  // second child's (made after the first's whole subtree).
+  std::vector<std::uint32_t> last(nodes_.size());
+  for (std::size_t i = nodes_.size(); i-- > 0;)
+    last[i] = nodes_[i].is_leaf() ? static_cast<std::uint32_t>(i)
+                                  : std::max(last[nodes_[i].first], last[nodes_[i].second]);
+  // Split the largest subtree until there are enough to share out.
+  const auto size = [&](std::uint32_t r) { return nodes_[r].is_leaf() ? 1u : last[r] - nodes_[r].first + 2; };
+  std::vector<std::uint32_t> roots{0};
+  while (roots.size() < kRefitTasks) {
+    const auto largest = std::max_element(roots.begin(), roots.end(),
+                                          [&](std::uint32_t a, std::uint32_t b) { return size(a) < size(b); });
+    if (nodes_[*largest].is_leaf()) break;
+    const SnchNode& n = nodes_[*largest];
+    refit_top_.push_back(*largest);
+    *largest = n.first;
+    roots.push_back(n.second);
+  }
+  std::sort(roots.begin(), roots.end());
+  std::sort(refit_top_.begin(), refit_top_.end());
+  for (std::uint32_t r : roots) {
+    const std::uint32_t begin = nodes_[r].is_leaf() ? r + 1 : nodes_[r].first;
+    refit_tasks_.push_back({r, begin, nodes_[r].is_leaf() ? r + 1 : last[r] + 1});
+  }
 }
 
-void Snch::refit(const Mesh& mesh) {
+template <class RefitNode>
+double Snch::sweep(const RefitNode& refit_node, WorkerPool* pool) {
+  if (nodes_.empty()) return 1.0;
+  // Each task sums its own inner radii; the sums are added in task order,
+  // so the ratio is the same however many threads ran them.
+  static thread_local std::vector<double> task_sum;
+  task_sum.assign(refit_tasks_.size(), 0.0);
+  double* sums = task_sum.data();
+  const auto run_task = [&](std::size_t k) {
+    const RefitTask& task = refit_tasks_[k];
+    double sum = 0.0;
+    // Children come after their parent: a reverse sweep meets both first.
+    for (std::uint32_t i = task.end; i-- > task.begin;) {
+      refit_node(i);
+      if (!nodes_[i].is_leaf()) sum += nodes_[i].radius;
+    }
+    refit_node(task.root);
+    if (!nodes_[task.root].is_leaf()) sum += nodes_[task.root].radius;
+    sums[k] = sum;
+  };
+  if (pool != nullptr && pool->size() > 1) {
+    pool->run(refit_tasks_.size(), run_task);
+  } else {
+    for (std::size_t k = 0; k < refit_tasks_.size(); ++k) run_task(k);
+  }
+  double inner = 0.0;
+  for (std::size_t k = 0; k < refit_tasks_.size(); ++k) inner += sums[k];
+  for (auto i = refit_top_.size(); i-- > 0;) {
+    refit_node(refit_top_[i]);
+    inner += nodes_[refit_top_[i]].radius;
+  }
+  return nodes_[0].radius > 0.0 && inner > 0.0 ? inner / nodes_[0].radius : 1.0;
+}
+
+void Snch::refit_inner(std::uint32_t i) {
+  SnchNode& node = nodes_[i];
+  const SnchNode &a = nodes_[node.first], &b = nodes_[node.second];
+  const SnchBox &ba = boxes_[node.first], &bb = boxes_[node.second];
+  SnchBox& box = boxes_[i];
+  box = box_between(glm::min(ba.center - ba.half, bb.center - bb.half),
+                    glm::max(ba.center + ba.half, bb.center + bb.half));
+  // The smallest of three spheres that each hold both children: the
+  // merged one, and two about the box's centre (around the box, and
+  // around the children's spheres).
+  Sphere s = merge(Sphere{a.center, a.radius}, Sphere{b.center, b.radius});
+  const double around_box = glm::length(box.half);
+  const double around_children = std::max(glm::length(a.center - box.center) + a.radius,
+                                          glm::length(b.center - box.center) + b.radius);
+  const double r = std::min(around_box, around_children);
+  if (r < s.radius) s = {box.center, r};
+  node.center = s.center;
+  node.radius = s.radius;
+  node.cone = merge(a.cone, b.cone);
+}
+
+void Snch::refit(const Mesh& mesh, WorkerPool* pool) {
   const auto start = std::chrono::steady_clock::now();
   // Each vertex's cone of the face normals around it, about its vertex
   // normal: its half-angle is the vertex's spread, and a leaf's cone holds
   // its three vertices' (refit_leaf_cone(); leaf_cone() bounds the same
-  // normals, about their sum). Kept between refits by the thread; a refit
-  // runs on one thread at a time.
+  // normals, about their sum). Kept between refits by the calling thread.
   static thread_local std::vector<CosCone> vertex_cone;
-  vertex_cone.resize(mesh.vertex_count());
-  vertex_spread_.resize(mesh.vertex_count());
-  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
-    vertex_cone[v] = refit_vertex_cone(mesh, v);
-    const CosCone& c = vertex_cone[v];
-    vertex_spread_[v] = c.cos > 0.0 ? std::atan2(c.sin, c.cos) : 0.5 * kPi;
+  const std::uint32_t vertices = mesh.vertex_count();
+  vertex_cone.resize(vertices);
+  vertex_spread_.resize(vertices);
+  CosCone* cones = vertex_cone.data();
+  constexpr std::uint32_t kVertexChunk = 4096;
+  const auto cone_chunk = [&](std::size_t k) {
+    const auto end = static_cast<std::uint32_t>(std::min<std::size_t>(vertices, (k + 1) * kVertexChunk));
+    for (auto v = static_cast<std::uint32_t>(k * kVertexChunk); v < end; ++v) {
+      cones[v] = refit_vertex_cone(mesh, v);
+      vertex_spread_[v] = cones[v].cos > 0.0 ? std::atan2(cones[v].sin, cones[v].cos) : 0.5 * kPi;
+    }
+  };
+  const std::size_t chunks = (std::size_t{vertices} + kVertexChunk - 1) / kVertexChunk;
+  if (pool != nullptr && pool->size() > 1 && chunks > 1) {
+    pool->run(chunks, cone_chunk);
+  } else {
+    for (std::size_t k = 0; k < chunks; ++k) cone_chunk(k);
   }
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
-    SnchNode& node = nodes_[i];
-    if (!node.is_leaf()) continue;
-    const Triangle tri = mesh.triangle(node.first);
-    const Sphere s = triangle_sphere(tri);
-    node.center = s.center;
-    node.radius = s.radius;
-    boxes_[i] = box_between(glm::min(glm::min(tri.v[0], tri.v[1]), tri.v[2]),
-                            glm::max(glm::max(tri.v[0], tri.v[1]), tri.v[2]));
-    node.cone = refit_leaf_cone(mesh, node.first, vertex_cone);
-  }
-  refit_inner(nodes_, boxes_);
+  const double ratio = sweep(
+      [&](std::uint32_t i) {
+        SnchNode& node = nodes_[i];
+        if (!node.is_leaf()) return refit_inner(i);
+        const Triangle tri = mesh.triangle(node.first);
+        const Sphere s = triangle_sphere(tri);
+        node.center = s.center;
+        node.radius = s.radius;
+        boxes_[i] = box_between(glm::min(glm::min(tri.v[0], tri.v[1]), tri.v[2]),
+                                glm::max(glm::max(tri.v[0], tri.v[1]), tri.v[2]));
+        node.cone = refit_leaf_cone(mesh, node.first, cones);
+      },
+      pool);
   stats_.refits += 1;
-  stats_.degradation = radius_ratio() / built_ratio_;
+  stats_.degradation = ratio / built_ratio_;
   stats_.refit_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void Snch::refit_as(const Snch& current, const Mesh& mesh) {
+void Snch::refit_as(const Snch& current, const Mesh& mesh, WorkerPool* pool) {
   if (build_id_ != current.build_id_) {
     *this = current;  // another tree: copied, into the storage at hand where it fits
   } else {
@@ -319,10 +386,10 @@ void Snch::refit_as(const Snch& current, const Mesh& mesh) {
     // spread and statistic but these.
     stats_ = current.stats_;
   }
-  refit(mesh);
+  refit(mesh, pool);
 }
 
-CosCone Snch::refit_leaf_cone(const Mesh& mesh, std::uint32_t t, const std::vector<CosCone>& vertex_cone) {
+CosCone Snch::refit_leaf_cone(const Mesh& mesh, std::uint32_t t, const CosCone* vertex_cone) {
   // The cone about the face normal that holds its vertices' cones: the
   // widest of their axes' angles to it plus their half-angles, sums taken on
   // cosines and sines. Three square roots, where merging the three cones

@@ -10,6 +10,8 @@
 
 namespace prox {
 
+class WorkerPool;
+
 struct SnchNode {
   Vec3 center{0.0};  // bounding sphere of the node's triangles, mesh units
   double radius = 0.0;
@@ -66,14 +68,15 @@ class Snch {
   // moved (same topology): every node's sphere, box and cone bottom-up from
   // the triangles' new positions, keeping the tree's shape. Linear time; the
   // bounds stay conservative, only looser than a fresh build's
-  // (stats().degradation says how much).
-  void refit(const Mesh& mesh);
+  // (stats().degradation says how much). With a pool, the vertices and the
+  // subtrees are refitted on its threads; the tree is the same bit for bit.
+  void refit(const Mesh& mesh, WorkerPool* pool = nullptr);
   // Becomes `current` refitted to `mesh` (current's mesh moved), reusing
   // this tree's storage: what a deforming mesh's next shape is made from
   // when a retired shape's tree is at hand. Where this tree is an older
   // refit of the same build, only the bounds are written (refit() writes
   // them all); else current is copied first.
-  void refit_as(const Snch& current, const Mesh& mesh);
+  void refit_as(const Snch& current, const Mesh& mesh, WorkerPool* pool = nullptr);
 
   const std::vector<SnchNode>& nodes() const { return nodes_; }
   const SnchNode& root() const { return nodes_[0]; }
@@ -111,11 +114,31 @@ class Snch {
   CosCone refit_vertex_cone(const Mesh& mesh, std::uint32_t v) const;
   // Triangle t's leaf cone in a refit, from its vertices' cones: it holds
   // what leaf_cone() holds.
-  static CosCone refit_leaf_cone(const Mesh& mesh, std::uint32_t t, const std::vector<CosCone>& vertex_cone);
-  // radius_ratio() of the built tree, its inner nodes as a refit fits them.
+  static CosCone refit_leaf_cone(const Mesh& mesh, std::uint32_t t, const CosCone* vertex_cone);
+  // A refit's unit of work: the subtree under `root`, whose descendants are
+  // exactly the nodes [begin, end) (a node's children are made side by side
+  // and the first one's subtree is built whole before the second's, so a
+  // subtree's descendants are contiguous).
+  struct RefitTask {
+    std::uint32_t root, begin, end;
+  };
+  // The subtrees a refit splits into (at most kRefitTasks, about equal), and
+  // the nodes above them, in ascending order.
+  std::vector<RefitTask> refit_tasks_;
+  std::vector<std::uint32_t> refit_top_;
+  static constexpr std::size_t kRefitTasks = 64;
+  void plan_refit();
+  // Calls refit_node(i) on every node, children before their parent, the
+  // subtrees on the pool's threads where there is one; returns the inner
+  // nodes' summed radii over the root's (how much room they take for the
+  // size of the whole; scale-free, and blind to the leaves, which are the
+  // triangles' own spheres whatever the tree), summed in a fixed order.
+  template <class RefitNode>
+  double sweep(const RefitNode& refit_node, WorkerPool* pool);
+  // Inner node i's sphere, box and cone from its children's.
+  void refit_inner(std::uint32_t i);
+  // That ratio for the built tree, its inner nodes as a refit fits them.
   double built_ratio_ = 1.0;
-  // The inner nodes' summed radii over the root's, of the tree as it is.
-  double radius_ratio() const;
   // Every vertex's spread (vertex_spread) from the mesh's normals, as a
   // build takes it (a refit takes it from its vertex cones).
   void compute_vertex_spread(const Mesh& mesh);
