@@ -18,9 +18,14 @@
 //   churn   a static body made and destroyed at 100 Hz beside a held tool
 //           while the threads run: the haptic loop's period p99 and max.
 //
+// With --workers N (> 1) the moves, refits and skinning are also run split
+// over N threads (proxWorldDef.workerCount), frame by frame beside the
+// serial ones, and checked to give the same tree.
+//
 // Prints a table and writes build/deform-bench.json with --json FILE.
-//   proxima_deform_bench [--frames N] [--churn-seconds S] [--json FILE]
+//   proxima_deform_bench [--frames N] [--workers N] [--churn-seconds S] [--json FILE]
 #include "common/json_writer.h"
+#include "common/worker_pool.h"
 #include "contact/proximity.h"
 #include "io/gltf.h"
 #include "io/obj.h"
@@ -118,12 +123,13 @@ struct RefitRow {
   std::string mesh;
   std::uint32_t triangles = 0;
   double move_ms = 0, refit_ms = 0, rebuild_ms = 0, world_ms = 0;
+  double pooled_move_ms = 0, pooled_refit_ms = 0;  // the same on --workers threads
   int rebuilds = 0;  // World::set_vertices that rebuilt rather than refitted
   double degradation = 1.0;
   double node_pairs_ratio = 1.0;  // the search's node pairs, refitted tree over fresh tree, median
 };
 
-RefitRow refit_row(const Shape& shape, int frames, int axis, double amplitude, double wavelength) {
+RefitRow refit_row(const Shape& shape, int frames, int axis, double amplitude, double wavelength, unsigned workers) {
   RefitRow row;
   row.mesh = shape.name;
   Status status;
@@ -132,8 +138,9 @@ RefitRow refit_row(const Shape& shape, int frames, int axis, double amplitude, d
   const Mesh rest = Mesh::build(input, status);
   if (!status) throw std::runtime_error(shape.name + ": " + status.message());
   row.triangles = rest.triangle_count();
-  Mesh mesh = rest;
-  Snch snch(rest);
+  Mesh mesh = rest, pooled_mesh = rest;
+  Snch snch(rest), pooled_snch(rest);
+  WorkerPool pool(workers);
   // A probe to search against: a small sheet 1 mm above the rest shape's
   // middle, facing down and tilted by 0.02 rad, so that the search has
   // contacts to find but no exactly parallel flat field (where which of the
@@ -150,7 +157,7 @@ RefitRow refit_row(const Shape& shape, int frames, int axis, double amplitude, d
 
   runtime::World world{runtime::WorldSettings{}};
   const runtime::Handle handle = world.create_mesh(input, status);
-  std::vector<double> move, refit, rebuild, in_world, ratio;
+  std::vector<double> move, refit, rebuild, in_world, ratio, pooled_move, pooled_refit;
   std::vector<double> xyz;
   for (int f = 1; f <= frames; ++f) {
     wave(rest, f, axis, amplitude, wavelength, xyz);
@@ -160,6 +167,16 @@ RefitRow refit_row(const Shape& shape, int frames, int axis, double amplitude, d
     t0 = Clock::now();
     snch.refit(mesh);
     refit.push_back(seconds_since(t0));
+    if (workers > 1) {
+      t0 = Clock::now();
+      if (!pooled_mesh.set_vertices(xyz.data(), mesh.vertex_count(), &pool)) throw std::runtime_error("set_vertices");
+      pooled_move.push_back(seconds_since(t0));
+      t0 = Clock::now();
+      pooled_snch.refit(pooled_mesh, &pool);
+      pooled_refit.push_back(seconds_since(t0));
+      if (pooled_snch.root().radius != snch.root().radius || pooled_mesh.vertex_normal(0) != mesh.vertex_normal(0))
+        throw std::runtime_error(shape.name + ": the refit on workers differs from the serial one");
+    }
     t0 = Clock::now();
     const Snch fresh(mesh);
     rebuild.push_back(seconds_since(t0));
@@ -188,6 +205,8 @@ RefitRow refit_row(const Shape& shape, int frames, int axis, double amplitude, d
   row.refit_ms = 1e3 * median(refit);
   row.rebuild_ms = 1e3 * median(rebuild);
   row.world_ms = 1e3 * median(in_world);
+  row.pooled_move_ms = 1e3 * median(pooled_move);
+  row.pooled_refit_ms = 1e3 * median(pooled_refit);
   row.degradation = snch.stats().degradation;
   row.node_pairs_ratio = median(ratio);
   return row;
@@ -197,32 +216,45 @@ struct SkinRow {
   std::string mesh;
   std::uint32_t triangles = 0;
   double animate_ms = 0;  // evaluate the rig, move the vertices, refit: one frame
+  double pooled_animate_ms = 0;  // the same in a world of --workers threads
 };
 
-// `file`'s animation 0 at 60 Hz over `frames` frames.
-SkinRow skin_row(const std::string& assets, const std::string& file, int frames) {
+// `file`'s animation 0 at 60 Hz over `frames` frames, in a world of one
+// thread and, frame by frame beside it, in one of `workers`.
+SkinRow skin_row(const std::string& assets, const std::string& file, int frames, unsigned workers) {
   std::vector<io::GltfMesh> parts;
   Status status = io::load_gltf(assets + "/" + file, io::GltfLoadOptions{}, parts);
   if (!status || parts.empty() || !parts[0].rig) throw std::runtime_error(file + ": no rig (" + status.message() + ")");
-  runtime::World world{runtime::WorldSettings{}};
   const io::GltfMesh& m = parts[0];
-  const runtime::Handle h =
-      world.create_mesh({m.positions.data(), static_cast<std::uint32_t>(m.positions.size() / 3), m.indices.data(),
-                         static_cast<std::uint32_t>(m.indices.size() / 3)},
-                        status);
-  if (!status || !world.set_rig(h, m.rig, status)) throw std::runtime_error(file + ": " + status.message());
-  SkinRow row{file, world.mesh(h).triangle_count(), 0.0};
-  std::vector<Vec3> positions;
-  std::vector<double> times;
-  for (int f = 0; f < frames; ++f) {
-    const auto t0 = Clock::now();
-    runtime::MeshRig& rig = *world.rig(h);
-    if (!rig.animate(0, f / 60.0, status)) throw std::runtime_error(status.message());
-    rig.welded_positions(world.mesh(h), positions);
-    if (!world.set_vertices(h, positions, status)) throw std::runtime_error(status.message());
-    times.push_back(seconds_since(t0));
+  SkinRow row{file, 0, 0.0, 0.0};
+  runtime::WorldSettings pooled;
+  pooled.workers = workers;
+  runtime::World world{runtime::WorldSettings{}}, pooled_world{pooled};
+  std::vector<double> times[2];
+  runtime::Handle handles[2];
+  for (int pass = 0; pass < (workers > 1 ? 2 : 1); ++pass) {
+    runtime::World& w = pass == 0 ? world : pooled_world;
+    const runtime::Handle h = handles[pass] =
+        w.create_mesh({m.positions.data(), static_cast<std::uint32_t>(m.positions.size() / 3), m.indices.data(),
+                       static_cast<std::uint32_t>(m.indices.size() / 3)},
+                      status);
+    if (!status || !w.set_rig(h, m.rig, status)) throw std::runtime_error(file + ": " + status.message());
+    row.triangles = w.mesh(h).triangle_count();
   }
-  row.animate_ms = 1e3 * median(times);
+  std::vector<Vec3> positions;
+  for (int f = 0; f < frames; ++f)
+    for (int pass = 0; pass < (workers > 1 ? 2 : 1); ++pass) {
+      runtime::World& w = pass == 0 ? world : pooled_world;
+      const runtime::Handle h = handles[pass];
+      const auto t0 = Clock::now();
+      runtime::MeshRig& rig = *w.rig(h);
+      if (!rig.animate(0, f / 60.0, status)) throw std::runtime_error(status.message());
+      rig.welded_positions(w.mesh(h), positions);
+      if (!w.set_vertices(h, positions, status)) throw std::runtime_error(status.message());
+      times[pass].push_back(seconds_since(t0));
+    }
+  row.animate_ms = 1e3 * median(times[0]);
+  row.pooled_animate_ms = 1e3 * median(times[1]);
   return row;
 }
 
@@ -367,6 +399,7 @@ ChurnRow churn(const std::string& bunny_path, double seconds, double rate) {
 
 int main(int argc, char** argv) {
   int frames = 60;
+  int workers = 1;
   double churn_seconds = 10.0;
   std::string json_path;
   std::string assets = PROX_SHARED_ASSETS_DIR;
@@ -375,31 +408,34 @@ int main(int argc, char** argv) {
     const bool has_value = i + 1 < argc;
     if (a == "--frames" && has_value) {
       frames = std::atoi(argv[++i]);
+    } else if (a == "--workers" && has_value) {
+      workers = std::atoi(argv[++i]);
     } else if (a == "--churn-seconds" && has_value) {
       churn_seconds = std::atof(argv[++i]);
     } else if (a == "--json" && has_value) {
       json_path = argv[++i];
     } else if (a == "--help" || a == "-h") {
-      std::printf("usage: proxima_deform_bench [--frames N] [--churn-seconds S] [--json FILE]\n");
+      std::printf("usage: proxima_deform_bench [--frames N] [--workers N] [--churn-seconds S] [--json FILE]\n");
       return 0;
     } else {
       std::fprintf(stderr, "proxima_deform_bench: unknown option '%s' (--help)\n", a.c_str());
       return 2;
     }
   }
-  if (frames < 1 || !(churn_seconds >= 0.0)) {
-    std::fprintf(stderr, "proxima_deform_bench: --frames must be >= 1 and --churn-seconds >= 0\n");
+  if (frames < 1 || workers < 1 || workers > 256 || !(churn_seconds >= 0.0)) {
+    std::fprintf(stderr,
+                 "proxima_deform_bench: --frames must be >= 1, --workers in [1, 256] and --churn-seconds >= 0\n");
     return 2;
   }
   try {
     std::vector<RefitRow> rows;
     // Sheets of about 1k, 10k, 60k and 100k triangles under a 5 mm wave of
     // 10 cm wavelength travelling at 6 cm/s, and the bunny bent by it.
-    for (const int n : {23, 71, 173, 224}) rows.push_back(refit_row(sheet(n), frames, 2, 0.005, 0.1));
+    for (const int n : {23, 71, 173, 224}) rows.push_back(refit_row(sheet(n), frames, 2, 0.005, 0.1, workers));
     io::ObjData obj;
     const Status read = io::read_obj(assets + "/bunny.obj", obj);
     if (!read) throw std::runtime_error(read.message());
-    rows.push_back(refit_row({"bunny", obj.positions, obj.indices}, frames, 1, 0.005, 0.1));
+    rows.push_back(refit_row({"bunny", obj.positions, obj.indices}, frames, 1, 0.005, 0.1, workers));
 
     std::printf("%-13s %9s %9s %9s %10s %10s %8s %11s %13s\n", "mesh", "triangles", "move ms", "refit ms",
                 "rebuild ms", "set_vert ms", "rebuilds", "degradation", "node pairs x");
@@ -407,12 +443,21 @@ int main(int argc, char** argv) {
       std::printf("%-13s %9u %9.3f %9.3f %10.3f %10.3f %8d %11.3f %13.3f\n", r.mesh.c_str(), r.triangles,
                   r.move_ms, r.refit_ms, r.rebuild_ms, r.world_ms, r.rebuilds, r.degradation,
                   r.node_pairs_ratio);
+    if (workers > 1) {
+      std::printf("on %d threads, beside the above frame by frame (the same trees):\n%-13s %9s %9s %9s\n", workers,
+                  "mesh", "triangles", "move ms", "refit ms");
+      for (const RefitRow& r : rows)
+        std::printf("%-13s %9u %9.3f %9.3f\n", r.mesh.c_str(), r.triangles, r.pooled_move_ms, r.pooled_refit_ms);
+    }
     std::vector<SkinRow> skins;
     for (const char* file : {"gltf/RiggedFigure.glb", "gltf/RecursiveSkeletons.glb"})
-      skins.push_back(skin_row(assets, file, frames));
-    for (const SkinRow& s : skins)
-      std::printf("skin: %s, %u triangles: proxMesh_Animate's work (evaluate, move, refit) %.3f ms a frame\n",
+      skins.push_back(skin_row(assets, file, frames, static_cast<unsigned>(workers)));
+    for (const SkinRow& s : skins) {
+      std::printf("skin: %s, %u triangles: proxMesh_Animate's work (evaluate, move, refit) %.3f ms a frame",
                   s.mesh.c_str(), s.triangles, s.animate_ms);
+      if (workers > 1) std::printf(" (on %d threads: %.3f ms)", workers, s.pooled_animate_ms);
+      std::printf("\n");
+    }
     const TrackRow tr = track_row(std::min(frames, 60));
     std::printf(
         "track: %d frames of a waved 10k sheet under a ball: %ld reference LMDs, %ld kept by one local update, "
@@ -430,6 +475,7 @@ int main(int argc, char** argv) {
       JsonWriter j;
       j.begin_object();
       j.key("frames").value(frames);
+      j.key("workers").value(workers);
       j.key("refit").begin_array();
       for (const RefitRow& r : rows) {
         j.begin_object();
@@ -442,6 +488,10 @@ int main(int argc, char** argv) {
         j.key("rebuilds").value(r.rebuilds);
         j.key("degradation").value(r.degradation);
         j.key("node_pairs_ratio").value(r.node_pairs_ratio);
+        if (workers > 1) {
+          j.key("pooled_move_ms").value(r.pooled_move_ms);
+          j.key("pooled_refit_ms").value(r.pooled_refit_ms);
+        }
         j.end_object();
       }
       j.end_array();
@@ -451,6 +501,7 @@ int main(int argc, char** argv) {
         j.key("mesh").value(s.mesh);
         j.key("triangles").value(static_cast<long long>(s.triangles));
         j.key("animate_ms").value(s.animate_ms);
+        if (workers > 1) j.key("pooled_animate_ms").value(s.pooled_animate_ms);
         j.end_object();
       }
       j.end_array();

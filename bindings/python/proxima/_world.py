@@ -37,9 +37,13 @@ class World:
     the end of a ``with`` block, or when it is garbage collected; its meshes
     and bodies keep it alive."""
 
-    def __init__(self, method="precise", cutoff=None, force="hard"):
+    def __init__(self, method="precise", cutoff=None, force="hard", workers=1):
+        """workers: threads the calling thread's heavy work (deforming
+        meshes, step()'s searches) is split over, itself included, in
+        [1, 256]; the results are the same whatever the count."""
         self._idp = None
         d = ffi.new("proxWorldDef*", lib.proxDefaultWorldDef())
+        d.workerCount = integer(workers, "workers")
         d.method = enum_value("proxMethod", method, "method")
         if isinstance(force, str):
             settings, default_cutoff = force_preset(force)

@@ -159,6 +159,12 @@ typedef struct proxWorldDef {
   double cutoff;           /* m: contacts farther apart are not wanted (> 0) */
   proxForceSettings force; /* the default: the "hard" settings of docs/cli.md */
   int32_t internalValue;   /* do not touch: lets proxCreateWorld detect a def not from proxDefaultWorldDef */
+  /* Threads the game thread's own heavy work is split over, itself
+   * included, in [1, 256] (default 1: no thread started): a deforming mesh's
+   * normals and hierarchy (proxMesh_SetVertices, proxMesh_Animate...) and
+   * proxWorld_Step's searches. The results are the same bits whatever the
+   * count. Leave the haptic and tracking threads their cores (docs/threading.md). */
+  int32_t workerCount;
 } proxWorldDef;
 
 /* A def with every field at its default. Any thread. */

@@ -2,6 +2,8 @@
 // header test check the same numbers.
 #include <proxima/proxima.h>
 
+#include <stddef.h>
+
 static_assert(sizeof(proxWorldId) == 8, "ABI");
 static_assert(sizeof(proxMeshId) == 16, "ABI");
 static_assert(sizeof(proxBodyId) == 16, "ABI");
@@ -10,6 +12,7 @@ static_assert(sizeof(proxQuat) == 32, "ABI");
 static_assert(sizeof(proxPose) == 56, "ABI");
 static_assert(sizeof(proxForceSettings) == 40, "ABI");
 static_assert(sizeof(proxWorldDef) == 64, "ABI");
+static_assert(offsetof(proxWorldDef, workerCount) == 60, "ABI");
 static_assert(sizeof(proxMeshDef) == 32, "ABI");
 static_assert(sizeof(proxBodyDef) == 152, "ABI");
 static_assert(sizeof(proxContact) == 112, "ABI");

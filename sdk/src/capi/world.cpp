@@ -15,6 +15,7 @@ proxWorldDef proxDefaultWorldDef(void) {
   d.cutoff = f.cutoff;
   d.force = {PROX_FORCE_EXPONENTIAL, f.max_force, f.max_torque, f.safety_distance, f.decay_length};
   d.internalValue = kDefCookie;
+  d.workerCount = 1;
   return d;
 }
 
@@ -50,12 +51,16 @@ proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
     if (method != PROX_METHOD_PRECISE && method != PROX_METHOD_ORIGINAL && method != PROX_METHOD_REFERENCE)
       fail(PROX_ERROR_INVALID_ARGUMENT, "def->method is not a proxMethod");
     need_positive(def->cutoff, "def->cutoff");
+    if (def->workerCount < 1 || def->workerCount > 256)
+      fail(PROX_ERROR_INVALID_ARGUMENT,
+           "def->workerCount is " + std::to_string(def->workerCount) + "; it must be in [1, 256]");
     runtime::WorldSettings s;
     s.method = method == PROX_METHOD_ORIGINAL    ? Method::Original
                : method == PROX_METHOD_REFERENCE ? Method::Reference
                                                  : Method::Precise;
     s.cutoff = def->cutoff;
     s.force = to_force(def->force, def->cutoff);
+    s.workers = static_cast<unsigned>(def->workerCount);
     auto w = std::make_unique<runtime::World>(s);
     std::lock_guard<std::mutex> lock(g_worlds_mutex);
     uint32_t i = 0;

@@ -1,5 +1,6 @@
 #include "runtime/world.h"
 
+#include "common/worker_pool.h"
 #include "runtime/threads.h"
 
 #include <glm/geometric.hpp>
@@ -21,6 +22,7 @@ Wrench clip_wrench(Wrench w, const ForceSettings& settings) {
 
 World::World(const WorldSettings& settings) : settings_(settings) {
   settings_.force.cutoff = settings_.cutoff;
+  if (settings_.workers > 1) pool_ = std::make_unique<WorkerPool>(settings_.workers);
 }
 
 World::~World() { stop_threads(); }
@@ -180,7 +182,7 @@ void World::update_broadphase(Broadphase& bp, std::uint64_t version, const Scene
 }
 
 void World::search_tool(std::uint32_t t, const SceneView& view, Broadphase& bp, PairMap& pairs,
-                        std::vector<PairInRange>& in_range, StepStats& stats) const {
+                        std::vector<PairInRange>& in_range, StepStats& stats, WorkerPool* pool) const {
   in_range.clear();
   const std::vector<BodyPose>& poses = bp.poses;
   const SceneBody& tool = view.bodies[t];
@@ -214,6 +216,7 @@ void World::search_tool(std::uint32_t t, const SceneView& view, Broadphase& bp, 
                   &tool_mesh.mesh,  tool_mesh.snch.get(),  tool_pose,
                   settings_.cutoff};
       q.patches = settings_.patches;
+      q.pool = pool;
       ProximityResult r;
       find_lmds(q, settings_.method, pair.state, r);
       pair.lmds = std::move(r.lmds);
@@ -300,7 +303,7 @@ void World::step() {
   std::vector<LmdPair> all;
   for (std::uint32_t t : broadphase_.tools) {
     BodySlot& tool = bodies_[t];
-    search_tool(t, scene, broadphase_, pairs_, in_range, stats_);
+    search_tool(t, scene, broadphase_, pairs_, in_range, stats_, pool_.get());
     if (tool.track_pending) {
       // The proxy moved without a new search: the pairs' LMDs follow it.
       const MeshData& tool_mesh = *meshes_[tool.mesh].data;

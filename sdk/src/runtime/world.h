@@ -18,6 +18,10 @@
 #include <unordered_map>
 #include <vector>
 
+namespace prox {
+class WorkerPool;
+}
+
 namespace prox::runtime {
 
 class Threads;
@@ -45,6 +49,10 @@ struct WorldSettings {
   double cutoff = 0.005;
   ForceSettings force = hard_force_settings();  // its cutoff is kept equal to `cutoff`
   PatchSettings patches;                        // how LMDs merge into patches (docs/patches.md)
+  // Threads the game thread's own heavy work splits over, itself included:
+  // a deforming mesh's normals and refit, the step's global searches. 1
+  // starts none (the haptic and tracking threads keep their cores).
+  unsigned workers = 1;
 };
 
 // A slot index and the generation it had when the object was created.
@@ -237,9 +245,10 @@ class World {
   // poses, keeping per-pair state in `pairs`; `in_range` lists the pairs
   // kept, by body index. What step() and the global search thread both run.
   // Reads the scene through `view` alone: safe beside the game thread while
-  // the threads run.
+  // the threads run. A pool, where there is one, splits each pair's search
+  // (the caller's own: one run at a time).
   void search_tool(std::uint32_t tool, const SceneView& view, Broadphase& bp, PairMap& pairs,
-                   std::vector<PairInRange>& in_range, StepStats& stats) const;
+                   std::vector<PairInRange>& in_range, StepStats& stats, WorkerPool* pool = nullptr) const;
 
   // The scene's latest version. Game thread.
   const std::shared_ptr<const SceneView>& view();
@@ -325,6 +334,8 @@ class World {
   // poses and the view, meet here (never on the haptic path).
   mutable std::mutex scene_mutex_;
   std::unique_ptr<Threads> threads_;
+  // The game thread's helpers (settings_.workers > 1), else null.
+  std::unique_ptr<WorkerPool> pool_;
 };
 
 }  // namespace prox::runtime

@@ -115,15 +115,15 @@ bool World::set_vertices(Handle h, const double* positions, std::uint32_t count,
   }
   if (!data) data = std::make_unique<MeshData>();
   data->mesh = slot.data->mesh;  // vertices and normals; the topology is shared
-  status = data->mesh.set_vertices(positions, count);
+  status = data->mesh.set_vertices(positions, count, pool_.get());
   if (!status) return false;
   // Only a MeshData holds its hierarchy, and a spare is held by no one.
   auto snch = std::const_pointer_cast<Snch>(std::move(data->snch));
   if (snch) {
-    snch->refit_as(*slot.data->snch, data->mesh);
+    snch->refit_as(*slot.data->snch, data->mesh, pool_.get());
   } else {
     snch = std::make_shared<Snch>(*slot.data->snch);
-    snch->refit(data->mesh);
+    snch->refit(data->mesh, pool_.get());
   }
   if (snch->stats().degradation > Snch::kRebuildDegradation) snch = std::make_shared<Snch>(data->mesh);
   data->snch = std::move(snch);

@@ -300,7 +300,9 @@ double Snch::sweep(const RefitNode& refit_node, WorkerPool* pool) {
     if (!nodes_[task.root].is_leaf()) sum += nodes_[task.root].radius;
     sums[k] = sum;
   };
-  if (pool != nullptr && pool->size() > 1) {
+  // Below a few thousand nodes waking the pool costs more than it saves.
+  constexpr std::size_t kSplitFrom = 8192;
+  if (pool != nullptr && pool->size() > 1 && nodes_.size() >= kSplitFrom) {
     pool->run(refit_tasks_.size(), run_task);
   } else {
     for (std::size_t k = 0; k < refit_tasks_.size(); ++k) run_task(k);

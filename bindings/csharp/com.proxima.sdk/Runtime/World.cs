@@ -14,6 +14,10 @@ namespace Proxima
         public double Cutoff = double.NaN;
         /// <summary>Replaces the preset's force settings when set.</summary>
         public ForceSettings? CustomForce;
+        /// <summary>Threads the game thread's own heavy work (deforming meshes, Step's
+        /// searches) is split over, itself included, in [1, 256]; the results are the same
+        /// whatever the count.</summary>
+        public int WorkerCount = 1;
     }
 
     /// <summary>A world of meshes and bodies (proxWorldId). The thread that creates
@@ -43,6 +47,7 @@ namespace Proxima
                 def.Cutoff = settings.Cutoff;
             }
             if (settings.CustomForce.HasValue) def.Force = settings.CustomForce.Value;
+            def.WorkerCount = settings.WorkerCount;
             Native.Check(Native.proxCreateWorld(ref def, out id));
         }
 

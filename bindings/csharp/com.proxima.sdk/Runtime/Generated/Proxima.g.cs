@@ -149,6 +149,11 @@ namespace Proxima
         public ForceSettings Force;
         // do not touch: lets proxCreateWorld detect a def not from proxDefaultWorldDef
         public int InternalValue;
+        // Threads the game thread's own heavy work is split over, itself included, in [1, 256] (default 1: no
+        // thread started): a deforming mesh's normals and hierarchy (proxMesh_SetVertices,
+        // proxMesh_Animate...) and proxWorld_Step's searches. The results are the same bits whatever the
+        // count. Leave the haptic and tracking threads their cores (docs/threading.md).
+        public int WorkerCount;
     }
 
     /// <summary>proxMeshDef</summary>
