@@ -154,6 +154,19 @@ def test_the_grip_moves_the_tool_and_contact_vibrates(xr, app, pose_mode):
     assert validation_log_errors(log, log_start) == ""
 
 
+def test_the_validation_layer_is_on(xr, app):
+    # Else the other tests' "no validation error" would hold vacuously.
+    import ctypes
+    loader, _, log = xr
+    start = os.path.getsize(log) if os.path.exists(log) else 0
+    location = (ctypes.c_uint8 * 64)()  # an XrSpaceLocation whose type is 0: wrong on purpose
+    locate = loader.lib.xrLocateSpace
+    locate.restype = ctypes.c_int32
+    assert locate(ctypes.c_uint64(app.local), ctypes.c_uint64(app.local), ctypes.c_int64(1000), location) == -1
+    app.destroy()
+    assert "VUID-XrSpaceLocation-type-type" in validation_log_errors(log, start)
+
+
 def test_focus_loss_is_forwarded(xr, app):
     _, mock, _ = xr
     with proxima.World() as world:
@@ -162,12 +175,14 @@ def test_focus_loss_is_forwarded(xr, app):
         device = scene.device(app, session_state="focused")
         app.pump_for(0.2)
         mock.lib.proxMockXr_SetFocused(0)
-        assert app.pump_until(lambda: app.state == 4)  # VISIBLE, polled and forwarded
-        ticks = device.stats.not_focused_ticks
-        app.pump_for(0.1)
-        assert device.stats.session_state == "visible"
-        assert device.stats.not_focused_ticks > ticks
-        mock.lib.proxMockXr_SetFocused(1)
+        try:
+            assert app.pump_until(lambda: app.state == 4)  # VISIBLE, polled and forwarded
+            ticks = device.stats.not_focused_ticks
+            app.pump_for(0.1)
+            assert device.stats.session_state == "visible"
+            assert device.stats.not_focused_ticks > ticks
+        finally:
+            mock.lib.proxMockXr_SetFocused(1)  # the mock outlives the test
         assert app.pump_until(lambda: device.stats.session_state == "focused")
         device.destroy()
 
