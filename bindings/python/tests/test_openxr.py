@@ -126,8 +126,10 @@ def test_the_grip_moves_the_tool_and_contact_vibrates(xr, app, pose_mode):
         target = _compose(scene.far(), (np.array([0.05, -0.02, 0.03]), _q([1, 1, 0], -40)))
         mock.hold(scene.grip_for(target))
         assert app.pump_until(lambda: scene.error(target) < 1e-5, 10.0), f"{scene.error(target)} m off"
+        app.pump_for(0.1)
+        assert scene.error(target) < 1e-5, "and stays there"
         far = device.stats
-        assert far.poses_pushed > 10
+        assert far.poses_pushed > 0 and far.locates > 0
         assert far.session_state == "focused"
         assert far.time_source == "timespec"
         assert far.vibrations_sent == 0, "vibrations while far from anything"
