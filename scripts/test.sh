@@ -145,8 +145,11 @@ build/py-venv/bin/python bindings/python/bench/step_overhead.py "$(assets_dir)/b
 build/py-venv/bin/python bindings/python/bench/gil.py "$(assets_dir)/bunny.obj" --seconds 0.2 >/dev/null
 # test_hid.py runs a child Python under the release build's HID emulator
 # (PROXIMA_HID_EMULATE): an emulated DualSense on umockdev, real hidapi.
+# test_openxr.py drives the real OpenXR loader on the release build's mock
+# runtime (PROXIMA_XR_RUNTIME_JSON, its manifest).
 PROXIMA_CLI="$(pwd)/build/release/samples/cli/proxima" PROXIMA_ASSETS="$(assets_dir)" \
   PROXIMA_HID_EMULATE="$(pwd)/build/release/tests/hid/proxima_hid_emulate" \
+  PROXIMA_XR_RUNTIME_JSON="$(pwd)/build/release/tests/openxr/mock_runtime.json" \
   build/py-venv/bin/pytest -q bindings/python/tests
 echo "-- ccache: $(ccache --print-stats | awk -F'\t' '$1 == "direct_cache_hit" || $1 == "preprocessed_cache_hit" { h += $2 }
   $1 == "cache_miss" { m = $2 } END { printf "%d hits, %d misses", h, m }')"

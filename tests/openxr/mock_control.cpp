@@ -100,3 +100,21 @@ const ProxMockXrControl kControl = {set_script,   set_tracked,    set_focused, v
 const ProxMockXrControl* get_control() { return &kControl; }
 
 }  // namespace prox::mock_xr
+
+// The panel's plain exports (mock_control.h), for the bindings' tests.
+#define PROX_MOCK_XR_EXPORT extern "C" __attribute__((visibility("default")))
+PROX_MOCK_XR_EXPORT void proxMockXr_SetScript(const ProxMockXrKey* keys, int32_t count) {
+  prox::mock_xr::get_control()->setScript(keys, count);
+}
+PROX_MOCK_XR_EXPORT void proxMockXr_SetTracked(int32_t tracked) {
+  prox::mock_xr::get_control()->setTracked(tracked);
+}
+PROX_MOCK_XR_EXPORT void proxMockXr_SetFocused(int32_t focused) {
+  prox::mock_xr::get_control()->setFocused(focused);
+}
+PROX_MOCK_XR_EXPORT int32_t proxMockXr_Vibrations(ProxMockXrVibration* out, int32_t first, int32_t capacity) {
+  return prox::mock_xr::get_control()->vibrations(out, first, capacity);
+}
+PROX_MOCK_XR_EXPORT uint64_t proxMockXr_LocateCalls(void) { return prox::mock_xr::get_control()->locateCalls(); }
+PROX_MOCK_XR_EXPORT XrTime proxMockXr_Now(void) { return prox::mock_xr::get_control()->now(); }
+PROX_MOCK_XR_EXPORT void proxMockXr_SetHabits(uint32_t habits) { prox::mock_xr::get_control()->setHabits(habits); }

@@ -83,6 +83,18 @@ typedef struct ProxMockXrControl {
 
 typedef const ProxMockXrControl* (*ProxMockXrGetControlFn)(void);
 
+/* The same panel as plain C functions the mock runtime's library exports,
+ * for the bindings' tests, which load that library themselves (Python's
+ * ctypes, C#'s P/Invoke) and cannot easily call through a table of function
+ * pointers. Test-only, like everything here: the names say "mock". */
+void proxMockXr_SetScript(const ProxMockXrKey* keys, int32_t count);
+void proxMockXr_SetTracked(int32_t tracked);
+void proxMockXr_SetFocused(int32_t focused);
+int32_t proxMockXr_Vibrations(ProxMockXrVibration* out, int32_t first, int32_t capacity);
+uint64_t proxMockXr_LocateCalls(void);
+XrTime proxMockXr_Now(void);
+void proxMockXr_SetHabits(uint32_t habits);
+
 #ifdef __cplusplus
 }
 #endif

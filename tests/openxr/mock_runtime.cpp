@@ -5,9 +5,10 @@
 // API for an app that makes a headless session, actions and a frame loop,
 // checked strictly, so a wrong call fails here as it would on a real
 // runtime. Loaded by the real OpenXR loader through a manifest
-// (XR_RUNTIME_JSON); the one symbol it exports is
-// xrNegotiateLoaderRuntimeInterface. On request it plays real runtimes'
-// habits (mock_control.h). This file: instances, paths, actions,
+// (XR_RUNTIME_JSON); the one OpenXR symbol it exports is
+// xrNegotiateLoaderRuntimeInterface (beside it, the control panel's
+// proxMockXr_* functions for the bindings' tests, mock_control.h). On
+// request it plays real runtimes' habits (mock_control.h). This file: instances, paths, actions,
 // sessions, events, frames and time; spaces and haptics are in
 // mock_spaces.cpp, the grip's script and the control panel in
 // mock_control.cpp.

@@ -47,6 +47,7 @@ TYPE_NAMES = {
     "proxStreamDeviceDef": "StreamDeviceSettings",  # public defs are "Settings", filled by users
     "proxThreadsDef": "ThreadSettings",
     "proxHidDeviceDef": "HidDeviceSettings",
+    "proxXrDeviceDef": "XrDeviceSettings",
     "proxThread": "ThreadRole",                  # "Thread" would hide System.Threading.Thread
     "proxHapticFlag": "HapticFlags",
 }

@@ -15,9 +15,10 @@ from ._core import (Busy, CapacityError, Error, FileError, InternalError, Invali
                     InvalidMesh, ParseError, Unsupported, VersionMismatch, WrongThread, c_dtype,
                     version_string)
 from ._devices import HidDevice, ScriptedDevice, StreamDevice, enumerate_hid_devices, get_time
+from ._xr import XrDevice, xr_create_actions, xr_suggested_bindings
 from ._types import (Animation, ForceSettings, HidDeviceInfo, HidDeviceStats, IntersectionStats, MeshInfo, MeshStats, PatchSettings, PatchStats,
                      RigInfo, SafetyStats, ScriptedDeviceRecord, Skin, SearchStats, StreamDeviceStats, ThreadStats,
-                     TrackStats, WorldStats, contact_dtype)
+                     TrackStats, WorldStats, XrDeviceStats, contact_dtype)
 from ._trace import FLAGS as HAPTIC_FLAGS, has_flag, trace_dtype
 from ._world import Body, Mesh, World, distance, force_preset
 
@@ -28,6 +29,7 @@ __version__ = version_string()
 __all__ = [
     "__version__", "World", "Mesh", "Body", "ScriptedDevice", "StreamDevice", "HidDevice", "get_time", "distance",
     "enumerate_hid_devices", "HidDeviceInfo", "HidDeviceStats",
+    "XrDevice", "XrDeviceStats", "xr_create_actions", "xr_suggested_bindings",
     "force_preset", "c_dtype", "StreamDeviceStats", "trace_dtype", "has_flag", "HAPTIC_FLAGS",
     "contact_dtype", "ForceSettings", "MeshInfo", "MeshStats", "RigInfo", "Animation", "Skin", "WorldStats", "SearchStats",
     "TrackStats",

@@ -304,7 +304,8 @@ class Body:
     def set_device(self, device):
         """Lets a device hold this tool while the threads run (None: none).
         Devices are built in (World.create_stream_device,
-        World.create_scripted_device, World.open_hid_device): a Python
+        World.create_scripted_device, World.open_hid_device,
+        World.create_xr_device): a Python
         callback cannot keep a 1 kHz haptic loop's time (docs/python.md)."""
         if device is None:
             check(lib.proxBody_SetDevice(self._idp[0], ffi.NULL))
@@ -312,7 +313,8 @@ class Body:
         device_def = getattr(device, "_device_def", None)
         if device_def is None:
             raise invalid(f"set_device: expected a device of proxima (World.create_stream_device, "
-                          f"World.create_scripted_device, World.open_hid_device) or None, not {device!r}; "
+                          f"World.create_scripted_device, World.open_hid_device, World.create_xr_device) "
+                          f"or None, not {device!r}; "
                           "Python callbacks cannot "
                           "drive the haptic loop: push poses to a stream device (docs/python.md)")
         if getattr(device, "world", None) is not self.world:

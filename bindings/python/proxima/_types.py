@@ -38,6 +38,9 @@ StreamDeviceStats = make_dataclass("proxStreamDeviceStats", "StreamDeviceStats",
                                    "What a streamed device saw (proxStreamDeviceStats).")
 HidDeviceStats = make_dataclass("proxHidDeviceStats", "HidDeviceStats",
                                 "What a HID device did since it was opened (proxHidDeviceStats).")
+XrDeviceStats = make_dataclass("proxXrDeviceStats", "XrDeviceStats",
+                               "What an OpenXR device did since it was created (proxXrDeviceStats); "
+                               "session_state and time_source by their short names.")
 # proxHidDeviceInfo, its strings decoded (a char array has no dataclass field).
 HidDeviceInfo = collections.namedtuple(
     "HidDeviceInfo", "path name serial vendor_id product_id profile interface_number usage_page usage")

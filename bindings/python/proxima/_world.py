@@ -393,6 +393,30 @@ class World:
         check(hid_function("proxWorld_OpenHidDevice")(self._idp[0], d, idp))
         return HidDevice(self, idp)
 
+    def create_xr_device(self, *, get_instance_proc_addr, instance, session, base_space, pose_action,
+                         haptic_action=0, subaction_path=0, tool_in_grip=None, base_to_world=None,
+                         session_state=None, **settings):
+        """Hands Proxima an XR controller (XrDevice, docs/openxr.md) and starts
+        its thread; call it after the app attached its action sets. The app's
+        OpenXR objects are ints (or ctypes pointers): get_instance_proc_addr
+        (xrGetInstanceProcAddr's address, or a ctypes or cffi function
+        pointer), instance, session, base_space (its LOCAL or STAGE space),
+        pose_action (POSE_INPUT), haptic_action (VIBRATION_OUTPUT, or 0: no
+        vibration), subaction_path (/user/hand/right's XrPath, or 0).
+        tool_in_grip and base_to_world are poses (position, quaternion);
+        session_state the session's state now (an XrSessionState int or
+        "focused", the default). The settings are proxXrDeviceDef's other
+        fields in snake_case, defaults from proxDefaultXrDeviceDef: pose_mode
+        ("locate_each_tick" or "extrapolate_frame"), vibration_rate,
+        force_for_full_amplitude, timespec_time, tick_rate, pulse_duration,
+        max_extrapolation, win32_performance_counter_time, runtime_time.
+        Raises Unsupported when the library was built without PROX_WITH_OPENXR."""
+        from ._xr import create_xr_device
+        handles = {"instance": instance, "session": session, "base_space": base_space, "pose_action": pose_action,
+                   "haptic_action": haptic_action, "subaction_path": subaction_path}
+        return create_xr_device(self, get_instance_proc_addr, handles, tool_in_grip, base_to_world, session_state,
+                                settings, _fill_settings)
+
     def load_scripted_device(self, path, seconds_per_pose, loop=False):
         """A scripted device whose path is read from a file: one pose per
         line, "tx ty tz qw qx qy qz", '#' comments."""

@@ -184,6 +184,15 @@ namespace Proxima
             Device.Release(id);
         }
 
+        /// <summary>Lets an XR controller hold this tool: its grip moves the tool, the force
+        /// comes back as its vibration.</summary>
+        public void SetDevice(XrDevice device)
+        {
+            DeviceDef def = device.GetDeviceDef();
+            Native.Check(Native.proxBody_SetDevice(id, ref def));
+            Device.Release(id);
+        }
+
         /// <summary>No device holds the tool: Pose moves it.</summary>
         public void ClearDevice()
         {

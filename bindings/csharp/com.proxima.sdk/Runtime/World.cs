@@ -264,6 +264,13 @@ namespace Proxima
         public HidDevice OpenHidDevice(HidDeviceSettings settings, string path = null) =>
             HidDevice.Open(id, settings, path);
 
+        /// <summary>Hands Proxima an XR controller (see XrDevice) and starts its thread: the
+        /// app's OpenXR objects and the device's settings, from XrDeviceSettings.Default.
+        /// Call it after the app attached its action sets; attach the device with
+        /// Body.SetDevice. ProximaException (InvalidArgument) names what is wrong with the
+        /// settings, including what the runtime refused. Game thread.</summary>
+        public XrDevice CreateXrDevice(XrDeviceSettings settings) => XrDevice.Create(id, settings);
+
         /// <summary>A scripted device whose path is a file: "tx ty tz qw qx qy qz" per line.</summary>
         public ScriptedDevice LoadScriptedDevice(string path, double secondsPerPose, bool loop)
         {

@@ -64,7 +64,7 @@ namespace Proxima
 
     /// <summary>proxXrDeviceDef</summary>
     [StructLayout(LayoutKind.Sequential)]
-    internal partial struct XrDeviceDef
+    public partial struct XrDeviceSettings
     {
         // the app's: every call goes through it
         public IntPtr GetInstanceProcAddr;
@@ -100,7 +100,7 @@ namespace Proxima
         // s: PROX_XR_EXTRAPOLATE_FRAME predicts at most this far (default 0.05)
         public double MaxExtrapolation;
         // do not touch
-        public int InternalValue;
+        readonly int internalValue;
         // Windows: the app enabled XR_KHR_win32_convert_performance_counter_time, "now" comes from it
         // (default 0; refused elsewhere).
         public Bool32 Win32PerformanceCounterTime;
@@ -145,9 +145,9 @@ namespace Proxima
     internal static partial class Native
     {
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern XrDeviceDef proxDefaultXrDeviceDef();
+        internal static extern XrDeviceSettings proxDefaultXrDeviceDef();
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern Result proxWorld_CreateXrDevice(WorldId world, ref XrDeviceDef def, out XrDeviceId device);
+        internal static extern Result proxWorld_CreateXrDevice(WorldId world, ref XrDeviceSettings def, out XrDeviceId device);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxXrDevice_OnSessionState(XrDeviceId device, int state);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

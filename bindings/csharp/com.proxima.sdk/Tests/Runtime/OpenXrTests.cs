@@ -3,9 +3,9 @@ using NUnit.Framework;
 
 namespace Proxima.Tests
 {
-    /// <summary>proxima_openxr.h's declarations (generated; no wrapper yet) against the
-    /// library: the def's defaults by value, and a refusal with its message through
-    /// a ref def. PROXIMA_WITH_OPENXR says whether the library has the OpenXR device
+    /// <summary>proxima_openxr.h's declarations and XrDevice against the library: the
+    /// settings' defaults by value, and a refusal with its message (the device end
+    /// to end, on the real loader and the mock runtime: tests/csharp/XrDeviceTests.cs). PROXIMA_WITH_OPENXR says whether the library has the OpenXR device
     /// (ctest sets it from PROX_WITH_OPENXR); without it the calls must be missing.</summary>
     [TestFixture]
     public class OpenXrTests
@@ -23,10 +23,12 @@ namespace Proxima.Tests
         {
             if (!LibraryHasOpenXr())
             {
-                Assert.Throws<EntryPointNotFoundException>(() => Native.proxDefaultXrDeviceDef());
+                var e = Assert.Throws<ProximaException>(() => { var s = XrDeviceSettings.Default; });
+                Assert.AreEqual(Result.Unsupported, e.Result);
+                StringAssert.Contains("PROX_WITH_OPENXR", e.Message);
                 return;
             }
-            XrDeviceDef d = Native.proxDefaultXrDeviceDef();
+            XrDeviceSettings d = XrDeviceSettings.Default;
             Assert.AreEqual(IntPtr.Zero, d.GetInstanceProcAddr);
             Assert.AreEqual(0UL, d.Instance);
             Assert.AreEqual(XrPoseMode.LocateEachTick, d.PoseMode);
@@ -46,12 +48,30 @@ namespace Proxima.Tests
             if (!LibraryHasOpenXr()) return;  // TheDefaultDefIsTheHeaders checked the calls are missing
             using (var world = new World())
             {
-                XrDeviceDef d = Native.proxDefaultXrDeviceDef();
+                XrDeviceSettings d = XrDeviceSettings.Default;
                 Result r = Native.proxWorld_CreateXrDevice(world.id, ref d, out XrDeviceId device);
                 Assert.AreEqual(Result.InvalidArgument, r);
                 StringAssert.Contains("getInstanceProcAddr is NULL", ProximaException.FromLastError(r).Message);
                 Assert.IsFalse((bool)Native.proxXrDevice_IsValid(device));
+
+                // The wrapper: the same refusal, as an exception with the library's words.
+                var e = Assert.Throws<ProximaException>(() => world.CreateXrDevice(XrDeviceSettings.Default));
+                Assert.AreEqual(Result.InvalidArgument, e.Result);
+                StringAssert.Contains("getInstanceProcAddr is NULL", e.Message);
             }
+        }
+
+        [Test]
+        public void ADeviceThatIsNoneRefusesCalls()
+        {
+            if (!LibraryHasOpenXr()) return;
+            XrDevice none = default(XrDevice);
+            Assert.IsFalse(none.IsValid);
+            var e = Assert.Throws<ProximaException>(() => { var s = none.Stats; });
+            Assert.AreEqual(Result.InvalidHandle, e.Result);
+            StringAssert.Contains("null id", e.Message);
+            e = Assert.Throws<ProximaException>(() => none.OnFrame(1, 1));
+            Assert.AreEqual(Result.InvalidHandle, e.Result);
         }
     }
 }
