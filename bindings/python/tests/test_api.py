@@ -204,6 +204,41 @@ def test_set_vertices_deforms_the_mesh_for_every_body_using_it(world):
         wall_mesh.set_vertices(moved.ravel())
 
 
+def _sheet(n, side):
+    """An n x n sheet of side `side` in z = 0 facing +z: (vertices, triangles)."""
+    g = np.linspace(0.0, side, n + 1)
+    xs, ys = np.meshgrid(g, g)
+    vertices = np.column_stack([xs.ravel(), ys.ravel(), np.zeros(xs.size)])
+    a = (np.arange(n)[None, :] + (n + 1) * np.arange(n)[:, None]).ravel()
+    return vertices, np.concatenate([np.column_stack([a, a + 1, a + n + 2]), np.column_stack([a, a + n + 2, a + n + 1])])
+
+
+def test_workers_split_a_deformation_and_give_the_same_contacts():
+    # A sheet of 16,200 triangles (enough to be split) under a wave, a small
+    # tilted sheet above it: the same contacts, to the bit, on 1 and 3 threads.
+    flat, tris = _sheet(90, 0.2)
+    small, small_tris = _sheet(6, 0.02)
+    moved = flat.copy()
+    moved[:, 2] = 0.002 * np.sin(2 * np.pi * moved[:, 0] / 0.05)
+    found = []
+    for workers in (1, 3):
+        with proxima.World(workers=workers) as w:
+            floor = w.create_mesh(flat, tris)
+            w.create_body(floor, "static")
+            half = 0.015
+            tool = w.create_body(w.create_mesh(small, small_tris), "tool",
+                                 pose=([0.09, 0.09, 0.003], [np.cos(half), np.sin(half), 0, 0]))
+            floor.set_vertices(moved)
+            w.step()
+            found.append(tool.contacts())
+    assert len(found[0]) > 0
+    for field in ("point_tool", "point_other", "normal", "distance"):
+        np.testing.assert_array_equal(found[0][field], found[1][field])
+    for bad in (0, 257):
+        with pytest.raises(proxima.InvalidArgument, match="workerCount"):
+            proxima.World(workers=bad)
+
+
 def _near_scene(world, mesh):
     rock = world.create_body(mesh, "static")
     tool = world.create_body(mesh, "tool", pose=NEAR_POSE, reference_point=box_centre(mesh))
