@@ -39,6 +39,15 @@ namespace Proxima.Tests
         }
 
         [Test]
+        public void WorkerCountReachesTheLibrary()
+        {
+            Assert.AreEqual(1, new WorldSettings().WorkerCount);
+            using (var world = new World(new WorldSettings { WorkerCount = 3 })) Assert.IsTrue(world.IsValid);
+            Support.Throws(Result.InvalidArgument, "workerCount",
+                           () => new World(new WorldSettings { WorkerCount = 0 }));
+        }
+
+        [Test]
         public void ThreadSettingsDefaultIsTheLibrarys()
         {
             ThreadSettings s = ThreadSettings.Default;
