@@ -331,6 +331,8 @@ std::string summary_json(const SceneRun& run, const Options& opt) {
     j.key("precise_over_original").begin_object();
     j.field("query_ms", ratio_of_medians("precise", "original", &Row::query_ms, contact));
     j.field("global_ms", ratio_of_medians("precise", "original", &Row::global_ms, contact));
+    if (!rows_of(run, "precise-1", false).empty())
+      j.field("global_one_thread_over_split", ratio_of_medians("precise-1", "precise", &Row::global_ms, contact));
     j.field("reduction_ms", ratio_of_medians("precise", "original", &Row::reduction_ms, contact));
     j.field("local_ms", ratio_of_medians("precise", "original", &Row::local_ms, contact));
     j.field("force_eval_ns", ratio_of_medians("precise", "original", &Row::force_eval_ns, contact));
@@ -449,6 +451,13 @@ void print_summary(const SceneRun& run) {
       med_ratio("precise", "original", &Row::global_ms).c_str(),
       med_ratio("precise", "original", &Row::reduction_ms).c_str(),
       med_ratio("precise", "original", &Row::local_ms).c_str());
+  if (!rows_of(run, "precise-1", false).empty()) {
+    const auto split = values(rows_of(run, "precise", true), &Row::global_ms);
+    const auto one = values(rows_of(run, "precise-1", true), &Row::global_ms);
+    std::printf("   precise global search on one thread / split (medians in contact, side by side): %s / %s ms = %s\n",
+                fmt(median(one), "%.3f").c_str(), fmt(median(split), "%.3f").c_str(),
+                fmt(ratio(median(one), median(split)), "%.2f").c_str());
+  }
   if (!rows_of(run, "fcl", false).empty()) {
     const auto all = pose_ratios(run, "precise", "fcl", false), in = pose_ratios(run, "precise", "fcl", true);
     const auto md = pose_ratios(run, "min-distance", "fcl", false);

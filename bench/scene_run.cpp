@@ -112,6 +112,24 @@ SceneRun run_scene(const Scene& scene, const Model& a, const Model& b, int poses
     base.step = static_cast<int>(i);
     base.s = p.s, base.x = p.x, base.target_gap = p.target_gap;
     const std::size_t first_row = run.rows.size();
+    // With --workers N, the precise global search on one thread too, at the
+    // same pose, before the split one on even poses and after it on odd
+    // ones (neither always finds the caches warm): the split's speed-up
+    // measured side by side, pose by pose.
+    const auto serial_search = [&] {
+      if (opt.workers <= 1) return;
+      Row sr = base;
+      sr.method = "precise-1";
+      PairQuery serial = q;
+      serial.pool = nullptr;
+      std::vector<LmdPair> found;
+      GlobalSearchStats stats;
+      global_search_precise(serial, found, stats);
+      sr.global_ms = sr.query_ms = stats.seconds * 1e3;
+      sr.node_pairs = double(stats.node_pairs), sr.leaf_pairs = double(stats.leaf_pairs);
+      run.rows.push_back(sr);
+    };
+    if (i % 2 == 0) serial_search();
 
     for (MethodState& ms : methods) {
       Row r = base;
@@ -151,6 +169,8 @@ SceneRun run_scene(const Scene& scene, const Model& a, const Model& b, int poses
       ms.current = std::move(res.lmds);
       run.rows.push_back(r);
     }
+
+    if (i % 2 == 1) serial_search();
 
     // Proxima's exact minimum distance: the single-pair query FCL answers.
     Row md = base;
