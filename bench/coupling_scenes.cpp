@@ -79,7 +79,6 @@ Scene make_scene(const std::string& name, std::string& error) {
   Scene s;
   s.name = name;
   s.settings.force = hard_force_settings();
-  s.settings.cutoff = s.settings.force.cutoff;
   if (name == "bunny") {
     s.obstacle = obj_soup("bunny.obj", error);
     s.tool = s.obstacle;

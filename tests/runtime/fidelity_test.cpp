@@ -54,8 +54,8 @@ class Fidelity : public ::testing::Test {
   // cutoff).
   void make_world(double created, coupling::ToolMode mode) {
     WorldSettings ws;
-    ws.cutoff = 0.01;
     ws.force = soft_force_settings();
+    ws.force.cutoff = 0.01;
     world_ = std::make_unique<World>(ws);
     const double c[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
     for (double v : c) positions_.push_back(0.1 * v);

@@ -33,7 +33,7 @@ class LivingScene : public ThreadsTest {
   ProximityResult expected_with_wall_at(const Vec3& offset) const {
     ProximityResult r;
     PairState state;
-    find_lmds(make_query(*bunny_, Pose{glm::dmat3(1.0), offset}, *bunny_, near_, world_settings_.cutoff),
+    find_lmds(make_query(*bunny_, Pose{glm::dmat3(1.0), offset}, *bunny_, near_, world_settings_.cutoff()),
               Method::Precise, state, r);
     return r;
   }
@@ -138,7 +138,7 @@ TEST_F(LivingScene, AHeldToolDeformsUnderTheHand) {
   ProximityResult expected;
   PairState state;
   const Pose moved{near_.rotation, near_.translation + towards_wall};
-  find_lmds(make_query(*bunny_, Pose{}, *bunny_, moved, world_settings_.cutoff), Method::Precise, state, expected);
+  find_lmds(make_query(*bunny_, Pose{}, *bunny_, moved, world_settings_.cutoff()), Method::Precise, state, expected);
   ASSERT_FALSE(expected.lmds.empty());
   double closest = kNoContact;
   for (const LmdPair& p : expected.lmds) closest = std::min(closest, p.distance);

@@ -91,7 +91,7 @@ class ThreadsTest : public ::testing::Test {
       std::mt19937_64 rng(seed);
       near_ = prox::testing::pose_at_gap(*bunny_, *bunny_, 0.001, rng);
       PairState state;
-      find_lmds(make_query(*bunny_, Pose{}, *bunny_, near_, world_settings_.cutoff), Method::Precise, state,
+      find_lmds(make_query(*bunny_, Pose{}, *bunny_, near_, world_settings_.cutoff()), Method::Precise, state,
                 expected_);
       expected_wrench_ = tool_wrench(world_settings_.force, expected_.lmds, near_.apply(bunny_->centre));
       if (expected_.lmds.size() >= 3 && !expected_wrench_.clipped && length(expected_wrench_.force) > 0.01)

@@ -107,7 +107,7 @@ TEST_F(ThreadsTest, TheDeviceIsToldTheClosestDistanceAndAStallKeepsIt) {
   ASSERT_TRUE(wait_until([&] { return std::fabs(device->closest.load() - least) <= 1e-9; }))
       << "told " << device->closest.load() << " m, the LMDs' least is " << least << " m";
   EXPECT_EQ(device->safety_distance.load(), world_settings_.force.safety_distance);
-  EXPECT_EQ(device->cutoff.load(), world_settings_.cutoff);
+  EXPECT_EQ(device->cutoff.load(), world_settings_.cutoff());
   Threads& threads = *world_->threads();
   threads.stall(Role::Local, true);
   ASSERT_TRUE(faded_out());

@@ -58,7 +58,6 @@ proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
     s.method = method == PROX_METHOD_ORIGINAL    ? Method::Original
                : method == PROX_METHOD_REFERENCE ? Method::Reference
                                                  : Method::Precise;
-    s.cutoff = def->cutoff;
     s.force = to_force(def->force, def->cutoff);
     s.workers = static_cast<unsigned>(def->workerCount);
     auto w = std::make_unique<runtime::World>(s);

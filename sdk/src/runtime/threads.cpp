@@ -34,7 +34,7 @@ DeviceWrench device_wrench(const Wrench& w, bool limited, double closest, const 
           limited,
           closest,
           world.force.safety_distance,
-          world.cutoff};
+          world.cutoff()};
 }
 
 // A device's pose as a Pose, or false when it is not one (non-finite, or a
@@ -67,9 +67,8 @@ Threads::Threads(World& world, const ThreadSettings& settings) : world_(world), 
   epoch_ = Clock::now();
   local_view_ = global_view_ = world.view();
   auto first = std::make_unique<ToolSet>();
-  for (std::uint32_t i = 0; i < world.bodies_.size(); ++i) {
-    const World::BodySlot& b = world.bodies_[i];
-    if (!b.alive || b.type != BodyType::Tool) continue;
+  for (std::uint32_t i = 0; i < world.body_slots(); ++i) {
+    if (!world.is_tool(i)) continue;
     tools_.push_back(make_tool(i));
     first->tools.push_back(tools_.back().get());
   }
@@ -132,7 +131,7 @@ bool Threads::check(const ThreadSettings& s, Status& status) {
 bool Threads::start(Status& status) {
   const ThreadSettings& s = settings_;
   if (!check(s, status)) return false;
-  if (s.trust_distance == 0.0) settings_.trust_distance = world_.settings_.cutoff;
+  if (s.trust_distance == 0.0) settings_.trust_distance = world_.settings().cutoff();
   loop_stats_[int(Role::Haptic)].reset(s.haptic_rate);
   loop_stats_[int(Role::Local)].reset(s.local_rate);
   loop_stats_[int(Role::Global)].reset(s.global_rate);
@@ -286,7 +285,7 @@ void Threads::haptic_main() {
 
 bool Threads::fade_step(Tool& tool, double dt) {
   const Wrench w = tool.filter.step(Wrench{}, false, dt);
-  if (tool.device.attached()) tool.device->write_wrench(device_wrench(w, true, kNoContact, world_.settings_));
+  if (tool.device.attached()) tool.device->write_wrench(device_wrench(w, true, kNoContact, world_.settings()));
   tool.wrench.store({w});
   if (tool.trace) {
     const Pose device = tool.pose.load().pose;
@@ -340,7 +339,7 @@ void Threads::haptic_tick(Tool& tool, double t, double dt) {
   bool limited = false;
   const Wrench w = tool.filter.step(target, valid, dt, &limited);
   if (limited) count(limited_ticks_);
-  if (tool.device.attached()) tool.device->write_wrench(device_wrench(w, limited, closest, world_.settings_));
+  if (tool.device.attached()) tool.device->write_wrench(device_wrench(w, limited, closest, world_.settings()));
   tool.wrench.store({w});
   if (tool.trace) {
     if (limited) flags |= kTraceClipped;

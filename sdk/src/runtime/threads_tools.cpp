@@ -17,7 +17,7 @@ namespace {
 }  // namespace
 
 std::unique_ptr<Threads::Tool> Threads::make_tool(std::uint32_t i) {
-  const World::BodySlot& b = world_.bodies_[i];
+  const World::ToolStart b = world_.tool_start(i);
   auto tool = std::make_unique<Tool>();
   tool->body = i;
   tool->device = b.device;
@@ -43,19 +43,19 @@ std::unique_ptr<Threads::Tool> Threads::make_tool(std::uint32_t i) {
     if (tool->constrained) tool->snapshots.buffer(k).constraints.reserve(capacity);
   }
   const DeviceLimits limits = b.device.attached() ? b.device->limits() : DeviceLimits{};
-  tool->renderer = HapticRenderer({world_.settings_.force, tool->constrained, tool->coupling,
+  tool->renderer = HapticRenderer({world_.settings().force, tool->constrained, tool->coupling,
                                    tool->reference_local, tool->radius, capacity, b.pose, limits});
   if (settings_.trace_capacity > 0)
     tool->trace = std::make_unique<TraceRing<TraceSample>>(
         static_cast<std::size_t>(std::min(settings_.trace_capacity, kMaxTraceCapacity)));
-  tool->filter = SafetyFilter({world_.settings_.force.max_force, world_.settings_.force.max_torque,
+  tool->filter = SafetyFilter({world_.settings().force.max_force, world_.settings().force.max_torque,
                                settings_.max_force_rate, settings_.max_torque_rate});
   return tool;
 }
 
 void Threads::publish(std::unique_ptr<ToolSet> next) {
   std::sort(next->tools.begin(), next->tools.end(), [](const Tool* a, const Tool* b) { return a->body < b->body; });
-  next->of_body.assign(world_.bodies_.size(), -1);
+  next->of_body.assign(world_.body_slots(), -1);
   for (std::size_t k = 0; k < next->tools.size(); ++k)
     next->of_body[next->tools[k]->body] = static_cast<int>(k);
   next->version = sets_.empty() ? 1 : sets_.back()->version + 1;

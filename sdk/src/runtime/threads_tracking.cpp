@@ -66,14 +66,15 @@ void Threads::track(Tool& tool, const ToolSet& set, std::vector<const LmdPair*>&
     for (Tool* t : set.tools) adopt_view(*t);
   const SceneView& view = *local_view_;
   const MeshData& tool_mesh = *view.bodies[tool.body].mesh;
-  const Method method = world_.settings_.method;
+  const WorldSettings& ws = world_.settings();
+  const Method method = ws.method;
 
   // A new global result replaces the set of pairs; each pair's tracked LMDs
   // join the global ones (the tracker's cache drops the duplicates). Patches
   // are the exception: a tracked seed and a new one may stand for the same
   // LMDs from two different minima of a flat field, and both would count
   // them; the new patches replace the tracked ones.
-  const bool join_tracked = method == Method::Original || !world_.settings_.patches.enabled();
+  const bool join_tracked = method == Method::Original || !ws.patches.enabled();
   if (adopted) {
     const GlobalResult& g = tool.global.front();
     std::vector<LocalPair> next;
@@ -122,11 +123,9 @@ void Threads::track(Tool& tool, const ToolSet& set, std::vector<const LmdPair*>&
   std::size_t total = 0;
   std::uint32_t dropped = 0;
   for (LocalPair& lp : tool.local_pairs) {
-    const MeshData& other_mesh = *view.bodies[lp.other].mesh;
-    const PairQuery q{&other_mesh.mesh,     other_mesh.snch.get(), lp.other_pose,          &tool_mesh.mesh,
-                      tool_mesh.snch.get(), sample.pose,           world_.settings_.cutoff};
     LocalTrackingStats stats;
-    lp.tracker.update(q, lp.lmds, stats);
+    track_pair(*view.bodies[lp.other].mesh, lp.other_pose, tool_mesh, sample.pose, ws.cutoff(), lp.tracker, lp.lmds,
+               stats);
     total += lp.lmds.size();
     dropped += stats.dropped_out_of_range + stats.duplicates_dropped;
   }
@@ -163,7 +162,7 @@ void Threads::track(Tool& tool, const ToolSet& set, std::vector<const LmdPair*>&
       const double from_anchor = coupling::twist_displacement(
           coupling::twist_between(tool.anchor, sample.pose, tool.reference_local), view.bodies[tool.body].radius);
       s.reach = coupling::unchecked_reach(tool.proxy_state.clearance, from_anchor,
-                                          world_.settings_.force.safety_distance, world_.settings_.cutoff);
+                                          ws.force.safety_distance, ws.cutoff());
     }
   }
   s.tool_pose = sample.pose;
@@ -203,7 +202,7 @@ void Threads::move_proxy(Tool& tool, const PoseSample& device) {
   }
   const coupling::ProxyTool proxy_tool{&tool_mesh.mesh, tool_mesh.snch.get(), tool.reference_local,
                                        view.bodies[tool.body].radius};
-  const coupling::ProxySettings settings{world_.settings_.force.safety_distance, world_.settings_.cutoff};
+  const coupling::ProxySettings settings{world_.settings().force.safety_distance, world_.settings().cutoff()};
   coupling::ProxyStats stats;
   // Bodies beyond the global search's range were farther than the cutoff
   // from the anchor; the proxy stays close enough to it that they cannot
@@ -219,9 +218,8 @@ void Threads::global_main() {
   configure(Role::Global);
   const double period = settings_.global_rate > 0.0 ? 1.0 / settings_.global_rate : 0.0;
   double deadline = now(), previous = -1.0;
-  PairMap pairs;
-  std::vector<PairInRange> in_range;
-  Broadphase broadphase;
+  const WorldSettings& ws = world_.settings();
+  GlobalPass pass(ws.method, ws.cutoff(), ws.patches);
   std::uint64_t sequence = 0;
   while (!stop_.load(std::memory_order_relaxed)) {
     if (wait_while_stalled(Role::Global)) {
@@ -232,19 +230,13 @@ void Threads::global_main() {
     const double start = now();
     // The set first: a tool made since is in the view taken after it.
     const ToolSet& set = acquire(Role::Global);
-    {
-      // The game thread's moves: copied (and the tree rebuilt) only when
-      // something other than a tool moved.
-      std::lock_guard<std::mutex> lock(world_.scene_mutex_);
-      // The view and the poses in one piece: a body made since is in both.
-      global_view_ = world_.view_;
-      world_.refresh_poses(broadphase);
-      world_.update_broadphase(broadphase, world_.scene_version_, *global_view_);
-    }
+    // The game thread's moves: copied (and the tree rebuilt) only when
+    // something other than a tool moved.
+    global_view_ = world_.snapshot(pass);
     const SceneView& view = *global_view_;
     // The tools' poses from the haptic loop; a version that moves only when
     // the pose does, so a still tool costs no search.
-    std::vector<BodyPose>& poses = broadphase.poses;
+    std::vector<BodyPose>& poses = pass.poses();
     for (Tool* tool : set.tools) {
       // A constrained tool is searched where its proxy is.
       const PoseSample sample = tool->constrained ? tool->proxy.load() : tool->pose.load();
@@ -260,7 +252,7 @@ void Threads::global_main() {
     for (Tool* tool : set.tools) {
       if (tool->retiring.load(std::memory_order_relaxed) != 0) continue;
       const int searched_before = stats.pairs_searched;
-      world_.search_tool(tool->body, view, broadphase, pairs, in_range, stats);
+      const std::vector<PairInRange>& in_range = pass.search(tool->body, view, stats);
       for (const PairInRange& p : in_range) stats.contacts += static_cast<int>(p.slot->lmds.size());
       // Nothing searched, the same pairs in range and no LMDs lost since:
       // the local thread already has this answer (and has tracked it
@@ -293,7 +285,7 @@ void Threads::global_main() {
       r.sequence = ++sequence;
       tool->global.publish();
     }
-    World::prune(pairs);
+    pass.end();
     stats.seconds = now() - start;
     {
       std::lock_guard<std::mutex> lock(results_mutex_);

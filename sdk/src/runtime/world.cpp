@@ -20,8 +20,8 @@ Wrench clip_wrench(Wrench w, const ForceSettings& settings) {
 
 }  // namespace
 
-World::World(const WorldSettings& settings) : settings_(settings) {
-  settings_.force.cutoff = settings_.cutoff;
+World::World(const WorldSettings& settings)
+    : settings_(settings), global_(settings.method, settings.cutoff(), settings.patches) {
   if (settings_.workers > 1) pool_ = std::make_unique<WorkerPool>(settings_.workers);
 }
 
@@ -145,107 +145,32 @@ int World::tool_count() const {
   return n;
 }
 
-Aabb World::world_box(const Aabb& local, const Pose& pose, double margin) const {
-  // The box of the rotated box: centre moved, half-extents through |R|.
-  const Vec3 centre = pose.apply(0.5 * (local.min + local.max));
-  const Vec3 half = 0.5 * (local.max - local.min);
-  Vec3 extent(0.0);
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) extent[r] += std::abs(pose.rotation[c][r]) * half[c];
-  return {centre - extent - Vec3(margin), centre + extent + Vec3(margin)};
-}
-
-void World::refresh_poses(Broadphase& bp) const {
-  if (bp.scene_version != scene_version_ || bp.poses.size() != bodies_.size()) {
-    bp.poses.resize(bodies_.size());
-    for (std::size_t i = 0; i < bodies_.size(); ++i) bp.poses[i] = {bodies_[i].pose, bodies_[i].pose_version};
+void World::refresh_poses(GlobalPass& pass) const {
+  std::vector<BodyPose>& poses = pass.poses();
+  if (pass.scene_version() != scene_version_ || poses.size() != bodies_.size()) {
+    poses.resize(bodies_.size());
+    for (std::size_t i = 0; i < bodies_.size(); ++i) poses[i] = {bodies_[i].pose, bodies_[i].pose_version};
     return;
   }
-  for (std::uint32_t t : bp.tools) bp.poses[t] = {bodies_[t].pose, bodies_[t].pose_version};
+  for (std::uint32_t t : pass.tools()) poses[t] = {bodies_[t].pose, bodies_[t].pose_version};
 }
 
-void World::update_broadphase(Broadphase& bp, std::uint64_t version, const SceneView& view) const {
-  if (bp.scene_version == version) return;
-  bp.scene_version = version;
-  bp.tools.clear();
-  std::vector<BodyTree::Item> items;
-  for (std::uint32_t i = 0; i < view.bodies.size(); ++i) {
-    const SceneBody& b = view.bodies[i];
-    if (!b.alive) continue;
-    if (b.type == BodyType::Tool) {
-      bp.tools.push_back(i);
-    } else {
-      items.push_back({world_box(b.mesh->mesh.bounds(), bp.poses[i].pose, 0.0), i});
-    }
-  }
-  bp.tree.build(std::move(items));
+std::shared_ptr<const SceneView> World::snapshot(GlobalPass& pass) const {
+  // The view and the poses in one piece: a body made since is in both.
+  const std::lock_guard<std::mutex> lock(scene_mutex_);
+  std::shared_ptr<const SceneView> view = view_;
+  refresh_poses(pass);
+  pass.begin(scene_version_, *view);
+  return view;
 }
 
-void World::search_tool(std::uint32_t t, const SceneView& view, Broadphase& bp, PairMap& pairs,
-                        std::vector<PairInRange>& in_range, StepStats& stats, WorkerPool* pool) const {
-  in_range.clear();
-  const std::vector<BodyPose>& poses = bp.poses;
-  const SceneBody& tool = view.bodies[t];
-  const MeshData& tool_mesh = *tool.mesh;
-  const Pose& tool_pose = poses[t].pose;
-  // Broadphase: only bodies whose boxes meet the tool's box grown by the
-  // cutoff cost any narrow work; the tree finds the static and movable
-  // ones, the other tools (few, and moving every step) are tested here.
-  const Aabb tool_box = world_box(tool_mesh.mesh.bounds(), tool_pose, settings_.cutoff);
-  std::vector<std::uint32_t>& near = bp.scratch;
-  near.clear();
-  bp.tree.query(tool_box, [&near](std::uint32_t id) { near.push_back(id); });
-  for (std::uint32_t o : bp.tools)
-    if (o != t && boxes_overlap(tool_box, world_box(view.bodies[o].mesh->mesh.bounds(), poses[o].pose, 0.0)))
-      near.push_back(o);
-  std::sort(near.begin(), near.end());  // results in body order, whatever the tree's
-  for (std::uint32_t o : near) {
-    const SceneBody& other = view.bodies[o];
-    const MeshData& other_mesh = *other.mesh;
-    ++stats.pairs_in_range;
-    PairSlot& pair = pairs[pair_key(t, o)];
-    if (pair.tool_generation != tool.generation || pair.body_generation != other.generation) {
-      pair = PairSlot{};  // the slots were reused by new bodies
-      pair.tool_generation = tool.generation;
-      pair.body_generation = other.generation;
-    }
-    pair.seen = true;
-    // An unchanged pose pair has the same answer: skip the search.
-    if (pair.tool_version != poses[t].version || pair.body_version != poses[o].version) {
-      PairQuery q{&other_mesh.mesh, other_mesh.snch.get(), poses[o].pose,
-                  &tool_mesh.mesh,  tool_mesh.snch.get(),  tool_pose,
-                  settings_.cutoff};
-      q.patches = settings_.patches;
-      q.pool = pool;
-      ProximityResult r;
-      find_lmds(q, settings_.method, pair.state, r);
-      pair.lmds = std::move(r.lmds);
-      pair.tool_version = poses[t].version;
-      pair.body_version = poses[o].version;
-      ++stats.pairs_searched;
-      stats.candidates += r.candidates;
-      stats.search += r.global;
-      stats.patches += r.patches;
-      if (r.global.intersecting_pairs > 0) ++stats.intersecting_bodies;
-      for (const LocalTrackingStats& pass : r.reduction) {
-        stats.reduction_seconds += pass.seconds;
-        stats.reduction_cache_hits += pass.cache_hits;
-      }
-    }
-    in_range.push_back({o, &pair});
-  }
+bool World::is_tool(std::uint32_t slot) const {
+  return slot < bodies_.size() && bodies_[slot].alive && bodies_[slot].type == BodyType::Tool;
 }
 
-void World::prune(PairMap& pairs) {
-  // Pairs out of range lose their state (and their memory).
-  for (auto it = pairs.begin(); it != pairs.end();) {
-    if (!it->second.seen) {
-      it = pairs.erase(it);
-    } else {
-      it->second.seen = false;
-      ++it;
-    }
-  }
+World::ToolStart World::tool_start(std::uint32_t slot) const {
+  const BodySlot& b = bodies_[slot];
+  return {b.device, b.reference_point, b.radius, b.pose, b.device_pose, b.tool, b.wrench, b.contacts};
 }
 
 void World::step_proxy(std::uint32_t t, coupling::ProxyStats& stats) {
@@ -261,7 +186,7 @@ void World::step_proxy(std::uint32_t t, coupling::ProxyStats& stats) {
   // Every body a step can reach: a step moves no tool point farther than
   // the cutoff (update_proxy's limit).
   std::vector<coupling::Obstacle> obstacles;
-  const Aabb box = world_box(tool_mesh.mesh.bounds(), tool.pose, settings_.cutoff);
+  const Aabb box = world_box(tool_mesh.mesh.bounds(), tool.pose, settings_.cutoff());
   for (std::uint32_t o = 0; o < bodies_.size(); ++o) {
     const BodySlot& other = bodies_[o];
     if (o == t || !other.alive) continue;
@@ -271,7 +196,7 @@ void World::step_proxy(std::uint32_t t, coupling::ProxyStats& stats) {
   }
   const coupling::ProxyTool proxy_tool{&tool_mesh.mesh, tool_mesh.snch.get(), tool.reference_point,
                                        tool.radius};
-  const coupling::ProxySettings settings{settings_.force.safety_distance, settings_.cutoff};
+  const coupling::ProxySettings settings{settings_.force.safety_distance, settings_.cutoff()};
   coupling::update_proxy(tool.tool.coupling, settings, proxy_tool, obstacles.data(), obstacles.size(),
                          tool.device_pose, nullptr, proxy, stats);
   if (!stats.moved) return;
@@ -282,7 +207,7 @@ void World::step_proxy(std::uint32_t t, coupling::ProxyStats& stats) {
   // above does not depend on it: it is exact against every body in reach.
   const double moved = coupling::twist_displacement(
       coupling::twist_between(tool.searched_pose, tool.pose, tool.reference_point), tool.radius);
-  if (moved > kResearchFraction * (settings_.cutoff - settings_.force.safety_distance)) {
+  if (moved > kResearchFraction * (settings_.cutoff() - settings_.force.safety_distance)) {
     tool.pose_version += 1;
     tool.searched_pose = tool.pose;
     tool.track_pending = false;
@@ -296,26 +221,24 @@ void World::step() {
   stats_ = StepStats{};
   for (std::uint32_t t = 0; t < bodies_.size(); ++t)
     if (bodies_[t].alive && constrained({t, bodies_[t].generation})) step_proxy(t, bodies_[t].proxy_stats);
-  refresh_poses(broadphase_);
+  // The pipeline's stages in order, on this thread (the tracking threads
+  // run the same ones on their own schedule): the global pass, local
+  // tracking where a constrained tool's proxy moved without a new search,
+  // then the force.
+  refresh_poses(global_);
   const SceneView& scene = *view();
-  update_broadphase(broadphase_, scene_version_, scene);
-  std::vector<PairInRange> in_range;
+  global_.begin(scene_version_, scene);
   std::vector<LmdPair> all;
-  for (std::uint32_t t : broadphase_.tools) {
+  for (std::uint32_t t : global_.tools()) {
     BodySlot& tool = bodies_[t];
-    search_tool(t, scene, broadphase_, pairs_, in_range, stats_, pool_.get());
+    const std::vector<PairInRange>& in_range = global_.search(t, scene, stats_, pool_.get());
     if (tool.track_pending) {
       // The proxy moved without a new search: the pairs' LMDs follow it.
-      const MeshData& tool_mesh = *meshes_[tool.mesh].data;
       for (const PairInRange& p : in_range) {
-        PairSlot& pair = pairs_[pair_key(t, p.other)];
-        const MeshData& other_mesh = *meshes_[bodies_[p.other].mesh].data;
-        const PairQuery q{&other_mesh.mesh, other_mesh.snch.get(), broadphase_.poses[p.other].pose,
-                          &tool_mesh.mesh,  tool_mesh.snch.get(),  tool.pose,
-                          settings_.cutoff};
+        PairSlot& pair = *global_.find(t, p.other);
         LocalTrackingStats local;
-        (settings_.method == Method::Original ? pair.state.original : pair.state.precise)
-            .update(q, pair.lmds, local);
+        track_pair(*scene.bodies[p.other].mesh, global_.poses()[p.other].pose, *scene.bodies[t].mesh, tool.pose,
+                   settings_.cutoff(), pair.tracker(settings_.method), pair.lmds, local);
       }
       tool.track_pending = false;
     }
@@ -329,17 +252,21 @@ void World::step() {
     if (tool.tool.mode == coupling::ToolMode::Constrained) {
       const coupling::Twist offset =
           coupling::twist_between(tool.device_pose, tool.pose, tool.reference_point);
-      tool.wrench = clip_wrench(
-          coupling::coupling_wrench(tool.tool.coupling, tool.device_pose, tool.pose, tool.reference_point,
-                                    tool.offset_rate.update(offset, kStepSeconds)),
-          settings_.force);
-    } else {
-      tool.wrench = tool_wrench(settings_.force, all, tool.pose.apply(tool.reference_point));
+      tool.offset_rate.update(offset, kStepSeconds);
     }
+    tool.wrench = wrench_of(tool, all);
     stats_.contacts += static_cast<int>(tool.contacts.size());
   }
-  prune(pairs_);
+  global_.end();
   stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Wrench World::wrench_of(const BodySlot& tool, const std::vector<LmdPair>& lmds) const {
+  if (tool.tool.mode == coupling::ToolMode::Constrained)
+    return clip_wrench(coupling::coupling_wrench(tool.tool.coupling, tool.device_pose, tool.pose,
+                                                 tool.reference_point, tool.offset_rate.rate()),
+                       settings_.force);
+  return tool_wrench(settings_.force, lmds, tool.pose.apply(tool.reference_point));
 }
 
 void World::track() {
@@ -355,31 +282,20 @@ void World::track() {
     for (std::uint32_t o = 0; o < bodies_.size(); ++o) {
       const BodySlot& other = bodies_[o];
       if (o == t || !other.alive) continue;
-      const auto it = pairs_.find(pair_key(t, o));
-      if (it == pairs_.end()) continue;
-      PairSlot& pair = it->second;
-      if (pair.tool_generation != tool.generation || pair.body_generation != other.generation) continue;
-      const MeshData& other_mesh = *meshes_[other.mesh].data;
-      const PairQuery q{&other_mesh.mesh, other_mesh.snch.get(), other.pose,
-                        &tool_mesh.mesh,  tool_mesh.snch.get(),  tool.pose,
-                        settings_.cutoff};
-      // The tracker the pair's method reduces with (the reference has none
-      // of its own: it is tracked like the precise method).
-      LocalTracker& tracker = settings_.method == Method::Original ? pair.state.original : pair.state.precise;
+      PairSlot* pair = global_.find(t, o);
+      if (pair == nullptr || pair->tool_generation != tool.generation || pair->body_generation != other.generation)
+        continue;
       LocalTrackingStats local;
-      tracker.update(q, pair.lmds, local);
+      track_pair(*meshes_[other.mesh].data, other.pose, tool_mesh, tool.pose, settings_.cutoff(),
+                 pair->tracker(settings_.method), pair->lmds, local);
       track_stats_.local += local;
       ++track_stats_.pairs;
-      for (const LmdPair& p : pair.lmds) {
+      for (const LmdPair& p : pair->lmds) {
         tool.contacts.push_back({o, p});
         all.push_back(p);
       }
     }
-    tool.wrench = tool.tool.mode == coupling::ToolMode::Constrained
-                      ? clip_wrench(coupling::coupling_wrench(tool.tool.coupling, tool.device_pose, tool.pose,
-                                                              tool.reference_point, tool.offset_rate.rate()),
-                                    settings_.force)
-                      : tool_wrench(settings_.force, all, tool.pose.apply(tool.reference_point));
+    tool.wrench = wrench_of(tool, all);
   }
   track_stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }

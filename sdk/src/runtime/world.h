@@ -6,8 +6,8 @@
 #include "contact/polylines.h"
 #include "contact/proximity.h"
 #include "coupling/proxy.h"
-#include "runtime/body_tree.h"
 #include "runtime/device.h"
+#include "runtime/global_pass.h"
 #include "runtime/mesh_rig.h"
 #include "runtime/scene.h"
 
@@ -46,13 +46,16 @@ inline constexpr double kResearchFraction = 0.25;
 
 struct WorldSettings {
   Method method = Method::Precise;
-  double cutoff = 0.005;
-  ForceSettings force = hard_force_settings();  // its cutoff is kept equal to `cutoff`
-  PatchSettings patches;                        // how LMDs merge into patches (docs/patches.md)
+  // The distance-to-force curve, and in it the cutoff (contacts farther
+  // apart are not wanted), stored here alone.
+  ForceSettings force = hard_force_settings();
+  PatchSettings patches;  // how LMDs merge into patches (docs/patches.md)
   // Threads the game thread's own heavy work splits over, itself included:
   // a deforming mesh's normals and refit, the step's global searches. 1
   // starts none (the haptic and tracking threads keep their cores).
   unsigned workers = 1;
+
+  double cutoff() const { return force.cutoff; }
 };
 
 // A slot index and the generation it had when the object was created.
@@ -66,64 +69,11 @@ struct Contact {
   LmdPair lmd;              // A = the other body, B = the tool
 };
 
-struct StepStats {
-  int pairs_in_range = 0;
-  int pairs_searched = 0;
-  int contacts = 0;
-  long candidates = 0;
-  double seconds = 0.0;
-  // Summed over the pairs searched: the global searches and the reduction
-  // passes that follow them.
-  GlobalSearchStats search;
-  double reduction_seconds = 0.0;
-  std::uint64_t reduction_cache_hits = 0;
-  // The reduced LMDs merged into patches, over the pairs searched; the
-  // crossing pairs are in search.intersecting_pairs, and the pairs searched
-  // that had any in intersecting_bodies.
-  PatchStats patches;
-  int intersecting_bodies = 0;
-};
-
 // What the last track() did, summed over the pairs tracked.
 struct TrackStats {
   int pairs = 0;
   LocalTrackingStats local;
   double seconds = 0.0;
-};
-
-// A body's pose as a search sees it, with a version that changes whenever
-// the pose does (equal versions: the same pose, the same answer).
-struct BodyPose {
-  Pose pose;
-  std::uint64_t version = 0;
-};
-
-// What a tool-body pair keeps between searches.
-struct PairSlot {
-  PairState state;
-  std::vector<LmdPair> lmds;
-  std::uint64_t tool_version = ~0ull, body_version = ~0ull;
-  std::uint32_t tool_generation = 0, body_generation = 0;
-  bool seen = false;  // in range in the current search
-};
-using PairMap = std::unordered_map<std::uint64_t, PairSlot>;
-
-// The broadphase's memory, kept by whoever searches (the deterministic step,
-// the global search thread): the poses it works with and a tree of the
-// static and movable bodies' boxes, both rebuilt only when the scene's
-// shape or a non-tool pose changed (the scene version moved).
-struct Broadphase {
-  std::vector<BodyPose> poses;  // one per body slot; tools' refreshed every search
-  std::vector<std::uint32_t> tools;
-  BodyTree tree;
-  std::uint64_t scene_version = ~0ull;
-  std::vector<std::uint32_t> scratch;
-};
-
-// A pair the broadphase kept in a search, and its state after it.
-struct PairInRange {
-  std::uint32_t other = 0;
-  const PairSlot* slot = nullptr;
 };
 
 class World {
@@ -199,7 +149,7 @@ class World {
   // by the old rule, are dropped. Not while the threads run.
   void set_patches(const PatchSettings& patches) {
     settings_.patches = patches;
-    pairs_.clear();
+    global_ = GlobalPass(settings_.method, settings_.cutoff(), patches);
   }
   const TrackStats& track_stats() const { return track_stats_; }
   // A constrained tool's last proxy update in step().
@@ -238,17 +188,26 @@ class World {
   const Threads* threads() const { return threads_.get(); }
   const WorldSettings& settings() const { return settings_; }
 
-  // Brings a broadphase up to date with `poses` (one per body slot) at
-  // scene version `version`: rebuilds its tree when the version moved.
-  void update_broadphase(Broadphase& bp, std::uint64_t version, const SceneView& view) const;
-  // One tool's search against the bodies in range at the broadphase's
-  // poses, keeping per-pair state in `pairs`; `in_range` lists the pairs
-  // kept, by body index. What step() and the global search thread both run.
-  // Reads the scene through `view` alone: safe beside the game thread while
-  // the threads run. A pool, where there is one, splits each pair's search
-  // (the caller's own: one run at a time).
-  void search_tool(std::uint32_t tool, const SceneView& view, Broadphase& bp, PairMap& pairs,
-                   std::vector<PairInRange>& in_range, StepStats& stats, WorkerPool* pool = nullptr) const;
+  // What the threads take over of a tool's body when they start or it is
+  // made while they run. Game thread.
+  struct ToolStart {
+    Device device;
+    Vec3 reference_point{0.0};
+    double radius = 0.0;  // of the mesh's bounds about the reference point
+    Pose pose;            // what searches see: a constrained tool's proxy
+    Pose device_pose;     // a constrained tool's device pose
+    ToolSettings tool;
+    Wrench wrench;
+    std::vector<Contact> contacts;
+  };
+  std::uint32_t body_slots() const { return static_cast<std::uint32_t>(bodies_.size()); }
+  bool is_tool(std::uint32_t slot) const;
+  ToolStart tool_start(std::uint32_t slot) const;
+
+  // For the global search thread: under the scene lock, the latest view,
+  // the bodies' poses into `pass` (all of them when the scene's version
+  // moved, else the tools') and its broadphase brought to that version.
+  std::shared_ptr<const SceneView> snapshot(GlobalPass& pass) const;
 
   // The scene's latest version. Game thread.
   const std::shared_ptr<const SceneView>& view();
@@ -256,14 +215,9 @@ class World {
   // latest version when it is not that one (true), taking the scene lock
   // only then. A thread keeps its view alive as long as it uses it.
   bool latest_view(std::shared_ptr<const SceneView>& view) const;
-  // Drops the pairs no search has seen since the last call.
-  static void prune(PairMap& pairs);
-
   ~World();
 
  private:
-  friend class Threads;
-
   struct MeshSlot {
     std::uint32_t generation = 0;
     bool alive = false;
@@ -296,27 +250,28 @@ class World {
     double radius = 0.0;               // of the mesh's bounds about the reference point
   };
 
-  Aabb world_box(const Aabb& local, const Pose& pose, double margin) const;
   // The radius of a mesh's bounds about a point of its frame.
   static double radius_about(const Aabb& box, const Vec3& point);
   // Marks the scene's shape changed: a new view is made when next asked
   // for, and at once while the threads run (under scene_mutex_ then).
   void shape_changed();
   std::shared_ptr<SceneView> make_view() const;
-  // Copies every body's pose into `bp` when the scene version moved, else
+  // Copies every body's pose into `pass` when the scene version moved, else
   // only the tools'.
-  void refresh_poses(Broadphase& bp) const;
+  void refresh_poses(GlobalPass& pass) const;
   // A constrained tool's proxy update in the deterministic step: towards its
   // device pose, constrained by the last step's contacts.
   void step_proxy(std::uint32_t tool, coupling::ProxyStats& stats);
+  // A tool's wrench in the deterministic step: its coupling's for a
+  // constrained one, else the force curve's over `lmds`.
+  Wrench wrench_of(const BodySlot& tool, const std::vector<LmdPair>& lmds) const;
 
   WorldSettings settings_;
   std::vector<MeshSlot> meshes_;
   std::vector<BodySlot> bodies_;
-  PairMap pairs_;
   // glTF rigs, by mesh slot (rigged meshes only).
   std::unordered_map<std::uint32_t, MeshRig> rigs_;
-  Broadphase broadphase_;  // the deterministic step's
+  GlobalPass global_;  // the deterministic step's
   // Moves with every change the broadphase must see: bodies created or
   // destroyed, static and movable bodies moved (tools move every step and
   // are tested on their own).
