@@ -100,6 +100,7 @@ mkdir -p "$out/zip"
 python3 -c 'import sys, zipfile; zipfile.ZipFile(sys.argv[1]).extractall(sys.argv[2])' "$zip" "$out/zip"
 prefix=$(ls -d "$out"/zip/proxima-*-win64)
 for f in bin/proxima.dll lib/libproxima.dll.a lib/proxima.lib include/proxima/proxima.h include/proxima/threads.h \
+  include/proxima/base.h include/proxima/types.h \
   lib/cmake/proxima/proximaConfig.cmake; do
   [ -f "$prefix/$f" ] || fail "the zip has no $f"
 done

@@ -49,7 +49,8 @@ def main():
     # the C# on its own): proxima.h, the parts it includes, proxima_hid.h and
     # proxima_openxr.h.
     api = "".join(open(os.path.join(root, "sdk", "include", "proxima", h)).read()
-                  for h in ("proxima.h", "devices.h", "threads.h", "inspect.h", "proxima_hid.h", "proxima_openxr.h"))
+                  for h in ("base.h", "types.h", "proxima.h", "devices.h", "threads.h", "inspect.h", "proxima_hid.h",
+                            "proxima_openxr.h"))
     c_functions = set(re.findall(r"^PROX_API\s[^;]*?\b(prox\w+)\s*\(", api, re.M | re.S))
     generated = os.path.join(pkg, "Runtime", "Generated")
     native = "".join(open(os.path.join(generated, n)).read() for n in sorted(os.listdir(generated))

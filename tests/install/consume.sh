@@ -91,6 +91,7 @@ case $mode in
     lib=${library#"$work/prefix/"}
     lib=${lib%/libproxima.so.$version}
     for f in $lib/libproxima.so.0 $lib/libproxima.so include/proxima/proxima.h include/proxima/version.h \
+      include/proxima/base.h include/proxima/types.h \
       $lib/cmake/proxima/proximaConfig.cmake $lib/cmake/proxima/proximaConfigVersion.cmake \
       $lib/cmake/proxima/proximaTargets.cmake $lib/pkgconfig/proxima.pc; do
       [ -e "$work/prefix/$f" ] || fail "cmake --install did not install $f"

@@ -31,6 +31,8 @@ import cheader  # noqa: E402
 # optional parts (HID, OpenXR) are declared like the others: a DllImport is
 # looked up on its first call, so the package loads whatever the library has.
 HEADERS = [
+    ("base.h", "Base"),
+    ("types.h", "Types"),
     ("proxima.h", "Proxima"),
     ("devices.h", "Devices"),
     ("threads.h", "Threads"),

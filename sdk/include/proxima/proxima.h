@@ -1,7 +1,11 @@
 /* Proxima: multi-contact proximity haptics. The C API.
  *
- * This header (with proxima/threads.h and proxima/inspect.h, which it
- * includes) is the one public, stable interface of the SDK. It is plain
+ * This header is the one public, stable interface of the SDK. It includes
+ * its parts: proxima/base.h (the export macro, the version, results and
+ * errors), proxima/types.h (ids, defs, what the calls hand back),
+ * proxima/devices.h, proxima/threads.h and proxima/inspect.h (what the CLI
+ * and the benchmarks read); here are the functions of worlds, meshes and
+ * bodies. It is plain
  * C11: opaque value ids, plain structs, fixed-width types, 32-bit booleans
  * and enums, no C++ type, no exception. Every function returns a
  * proxResult (0 on success, negative on error); on error,
@@ -20,155 +24,22 @@
  * Calls from the wrong thread fail with PROX_ERROR_WRONG_THREAD. A world
  * either steps on the game thread (proxWorld_Step) or runs its own haptic,
  * local tracking and global search threads (proxWorld_StartThreads); while
- * they run, the scene's shape is frozen (PROX_ERROR_BUSY). Who owns what is
- * in docs/threading.md.
+ * they run, meshes and bodies still come and go and meshes deform
+ * (docs/dynamic-scenes.md). Who owns what is in docs/threading.md.
  *
  * A newcomer's walkthrough is samples/hello/hello.c.
  */
 #ifndef PROXIMA_PROXIMA_H
 #define PROXIMA_PROXIMA_H
 
-#include <stddef.h>
-#include <stdint.h>
-
-#include "proxima/version.h"
+#include "proxima/base.h"
+#include "proxima/types.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* Overridable, so that tools that parse the header (the Python binding's
- * cffi build) can define it away. On Windows proxima.dll exports the API
- * (PROX_BUILDING_SHARED, set by its build) and every other program imports
- * it from there. */
-#ifndef PROX_API
-#if defined(_WIN32) && defined(PROX_BUILDING_SHARED)
-#define PROX_API __declspec(dllexport)
-#elif defined(_WIN32)
-#define PROX_API __declspec(dllimport)
-#elif defined(__GNUC__)
-#define PROX_API __attribute__((visibility("default")))
-#else
-#define PROX_API
-#endif
-#endif /* PROX_API */
-
-/* The API version this header describes. proxDefaultWorldDef() stores it in
- * the def; proxCreateWorld() takes a def of the library's major version and
- * a minor one not newer than the library's, and refuses any other. */
-#define PROX_API_VERSION ((PROX_VERSION_MAJOR << 16) | PROX_VERSION_MINOR)
-
-/* A 32-bit boolean: 0 is false, anything else true. */
-typedef int32_t proxBool;
-
-/* ---- results ----------------------------------------------------------- */
-
-typedef enum proxResult {
-  PROX_SUCCESS = 0,
-  PROX_ERROR_INVALID_ARGUMENT = -1, /* NULL, NaN, out of range, malformed def */
-  PROX_ERROR_INVALID_HANDLE = -2,   /* null, destroyed or foreign id */
-  PROX_ERROR_INVALID_MESH = -3,     /* empty, non-finite or degenerate mesh data */
-  PROX_ERROR_FILE = -4,             /* a file cannot be read */
-  PROX_ERROR_PARSE = -5,            /* a file's content is malformed */
-  PROX_ERROR_UNSUPPORTED = -6,      /* valid input using an unsupported feature */
-  PROX_ERROR_VERSION_MISMATCH = -7, /* header and library disagree */
-  PROX_ERROR_WRONG_THREAD = -8,     /* called from a thread the function does not allow */
-  PROX_ERROR_CAPACITY = -9,         /* an output buffer is too small (the count says how big) */
-  PROX_ERROR_INTERNAL = -10,        /* a bug in Proxima: please report it with the message */
-  PROX_ERROR_BUSY = -11,            /* the world's threads are running: stop them first */
-  PROX_RESULT_FORCE32 = 0x7FFFFFFF
-} proxResult;
-
-/* A short, static name for a result ("PROX_ERROR_INVALID_HANDLE"). Any thread. */
-PROX_API const char* proxResultString(proxResult result);
-
-/* The message of the last error on the calling thread, naming the offending
- * argument; "" when the last call succeeded. Valid until the next call on
- * this thread. Any thread. */
-PROX_API const char* proxGetLastError(void);
-
-/* The library's version (compare with PROX_VERSION_* of this header). Any thread. */
-typedef struct proxVersion {
-  int32_t major, minor, patch;
-} proxVersion;
-PROX_API proxVersion proxGetVersion(void);
-
-/* ---- ids ----------------------------------------------------------------- */
-
-/* Ids are values: copy them freely. Zero-initialised ids are null. A
- * destroyed object's id stays invalid forever (the generation moves on). */
-typedef struct proxWorldId {
-  uint32_t index1; /* index + 1; 0 is null */
-  uint32_t generation;
-} proxWorldId;
-
-typedef struct proxMeshId {
-  uint32_t index1;
-  uint32_t generation;
-  proxWorldId world;
-} proxMeshId;
-
-typedef struct proxBodyId {
-  uint32_t index1;
-  uint32_t generation;
-  proxWorldId world;
-} proxBodyId;
-
-/* ---- geometry ------------------------------------------------------------ */
-
-typedef struct proxVec3 {
-  double x, y, z;
-} proxVec3;
-
-/* A unit quaternion; (1, 0, 0, 0) is the identity. */
-typedef struct proxQuat {
-  double w, x, y, z;
-} proxQuat;
-
-typedef struct proxPose {
-  proxVec3 position;
-  proxQuat rotation; /* normalised on input; a zero quaternion is an error */
-} proxPose;
-
 /* ---- world ----------------------------------------------------------------- */
-
-typedef enum proxMethod {
-  PROX_METHOD_PRECISE = 0,   /* the improved method: exact distances, visibility pre-test, reduction */
-  PROX_METHOD_ORIGINAL = 1,  /* the Johnson-Cohen baseline: 7 x 7 feature points */
-  PROX_METHOD_REFERENCE = 2, /* the brute-force truth: every triangle pair; slow, for tests */
-  PROX_METHOD_FORCE32 = 0x7FFFFFFF
-} proxMethod;
-
-typedef enum proxForceCurve {
-  PROX_FORCE_EXPONENTIAL = 0, /* max at the safety distance, falls by e per decay length, 0 at the cutoff */
-  PROX_FORCE_LINEAR = 1,      /* max at the safety distance, linear to 0 at the cutoff */
-  PROX_FORCE_CURVE_FORCE32 = 0x7FFFFFFF
-} proxForceCurve;
-
-typedef struct proxForceSettings {
-  proxForceCurve curve;
-  double maxForce;       /* N: per contact at the safety distance, and the clip of the sum (> 0) */
-  double maxTorque;      /* N m: clip of the summed torque (> 0) */
-  double safetyDistance; /* m: full force at and inside this distance (>= 0, < cutoff) */
-  double decayLength;    /* m: exponential curve's length scale (> 0) */
-} proxForceSettings;
-
-typedef struct proxWorldDef {
-  int32_t apiVersion; /* set by proxDefaultWorldDef to PROX_API_VERSION */
-  proxMethod method;
-  double cutoff;           /* m: contacts farther apart are not wanted (> 0) */
-  proxForceSettings force; /* the default: the "hard" settings of docs/cli.md */
-  int32_t internalValue;   /* do not touch: lets proxCreateWorld detect a def not from proxDefaultWorldDef */
-  /* Threads the game thread's own heavy work is split over, itself
-   * included, in [1, 256] (default 1: no thread started): a deforming mesh's
-   * normals and hierarchy (proxMesh_SetVertices, proxMesh_Animate...) and
-   * proxWorld_Step's searches. The results are the same bits whatever the
-   * count. Leave the haptic and tracking threads their cores (docs/threading.md). */
-  int32_t workerCount;
-} proxWorldDef;
-
-/* A def with every field at its default. Any thread. */
-PROX_API proxWorldDef proxDefaultWorldDef(void);
 
 /* Creates a world; the calling thread becomes its game thread. */
 PROX_API proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world);
@@ -179,16 +50,6 @@ PROX_API proxResult proxDestroyWorld(proxWorldId world);
 PROX_API proxBool proxWorld_IsValid(proxWorldId world);
 
 /* ---- meshes ---------------------------------------------------------------- */
-
-typedef struct proxMeshDef {
-  const double* positions; /* x, y, z per vertex */
-  uint32_t vertexCount;
-  const uint32_t* indices; /* three per triangle, counter-clockwise seen from outside */
-  uint32_t triangleCount;
-  int32_t internalValue;
-} proxMeshDef;
-
-PROX_API proxMeshDef proxDefaultMeshDef(void);
 
 /* Validates the data (finite coordinates, indices in range, at least one
  * non-degenerate triangle), welds vertices by position, builds the topology
@@ -216,15 +77,6 @@ PROX_API proxResult proxMesh_Destroy(proxMeshId mesh);
  * other it is false, and proxGetLastError says why (as it does for a dead
  * or null id). */
 PROX_API proxBool proxMesh_IsValid(proxMeshId mesh);
-
-typedef struct proxMeshInfo {
-  uint32_t triangleCount; /* after dropping triangles that repeat a vertex */
-  uint32_t vertexCount;   /* after welding */
-  uint32_t droppedTriangles;
-  uint32_t boundaryEdges;
-  uint32_t nonManifoldEdges;
-  proxVec3 boundsMin, boundsMax; /* in the mesh's own frame */
-} proxMeshInfo;
 
 /* Game thread. */
 PROX_API proxResult proxMesh_GetInfo(proxMeshId mesh, proxMeshInfo* info);
@@ -273,33 +125,16 @@ PROX_API proxResult proxMesh_GetWarnings(proxMeshId mesh, char* buffer, int32_t 
  * scene order places the vertex. All: game thread, also while the threads
  * run. A mesh without a
  * rig has zero of everything; posing it is PROX_ERROR_INVALID_ARGUMENT. */
-typedef struct proxRigInfo {
-  int32_t skinCount;
-  int32_t jointCount;       /* over every skin */
-  int32_t morphWeightCount; /* what proxMesh_SetMorphWeights takes */
-  int32_t animationCount;
-} proxRigInfo;
+
 /* Game thread. */
 PROX_API proxResult proxMesh_GetRigInfo(proxMeshId mesh, proxRigInfo* info);
 
-typedef struct proxSkinInfo {
-  char name[64]; /* NUL-terminated, cut to 63 bytes; "" when the file names none */
-  int32_t jointCount;
-  int32_t reserved;
-} proxSkinInfo;
 /* Skin `skin` in [0, skinCount). Game thread. */
 PROX_API proxResult proxMesh_GetSkinInfo(proxMeshId mesh, int32_t skin, proxSkinInfo* info);
 
 /* The animations, in the file's order (0 for a mesh without a rig). Game thread. */
 PROX_API proxResult proxMesh_GetAnimationCount(proxMeshId mesh, int32_t* count);
 
-typedef struct proxAnimationInfo {
-  char name[64];   /* NUL-terminated, cut to 63 bytes; "animation N" when the file names none */
-  double duration; /* seconds: the last keyframe's time (glTF time starts at 0) */
-  double start;    /* seconds: the first keyframe's time */
-  int32_t channelCount;
-  int32_t reserved;
-} proxAnimationInfo;
 /* Animation `index` in [0, count). Game thread. */
 PROX_API proxResult proxMesh_GetAnimationInfo(proxMeshId mesh, int32_t index, proxAnimationInfo* info);
 
@@ -326,44 +161,6 @@ PROX_API proxResult proxMesh_SetMorphWeights(proxMeshId mesh, const double* weig
 
 /* ---- bodies ---------------------------------------------------------------- */
 
-typedef enum proxBodyType {
-  PROX_BODY_STATIC = 0,  /* never moves; static-static pairs are never tested */
-  PROX_BODY_MOVABLE = 1, /* moved by the application */
-  PROX_BODY_TOOL = 2,    /* held by the user: contacts and forces are computed for tools */
-  PROX_BODY_TYPE_FORCE32 = 0x7FFFFFFF
-} proxBodyType;
-
-/* How a tool follows what moves it (docs/coupling.md). */
-typedef enum proxToolMode {
-  /* The tool is where its device (or SetPose) puts it; the force comes from
-   * its LMDs (the paper's distance-to-force curve). The default. */
-  PROX_TOOL_FREE = 0,
-  /* A proxy follows the device but never comes closer to another body than
-   * the safety distance; contacts are the proxy's, and the force is the
-   * virtual coupling, a spring-damper between device pose and proxy. */
-  PROX_TOOL_CONSTRAINED = 1,
-  PROX_TOOL_MODE_FORCE32 = 0x7FFFFFFF
-} proxToolMode;
-
-typedef struct proxBodyDef {
-  proxMeshId mesh;
-  proxBodyType type;
-  proxPose pose;
-  /* Tools: the point (in the body's frame) torques are taken about. */
-  proxVec3 referencePoint;
-  /* Tools: PROX_TOOL_FREE (default) or PROX_TOOL_CONSTRAINED. */
-  proxToolMode toolMode;
-  /* PROX_TOOL_CONSTRAINED: the coupling between device pose and proxy, at
-   * the tool's reference point: N/m, N s/m, N m/rad, N m s/rad (> 0, the
-   * dampings >= 0; defaults 1000, 2, 1, 0.002). */
-  double couplingStiffness;
-  double couplingDamping;
-  double couplingAngularStiffness;
-  double couplingAngularDamping;
-  int32_t internalValue;
-} proxBodyDef;
-
-PROX_API proxBodyDef proxDefaultBodyDef(void);
 /* Game thread. Create and destroy: also while the threads run
  * (docs/dynamic-scenes.md): a destroyed body's contacts fade from the force as
  * any lost contact does, and a new one is found by the next global search; a
@@ -396,33 +193,12 @@ PROX_API proxResult proxBody_GetProxyPose(proxBodyId tool, proxPose* pose);
  * threads. Game thread. */
 PROX_API proxResult proxWorld_Step(proxWorldId world);
 
-typedef struct proxContact {
-  proxBodyId other;    /* the body the tool is near */
-  proxVec3 pointTool;  /* closest point on the tool, world */
-  proxVec3 pointOther; /* closest point on the other body, world */
-  proxVec3 normal;     /* unit, from the other body to the tool */
-  double distance;     /* m, > 0 */
-  uint32_t triangleTool, triangleOther;
-  int32_t featureTool, featureOther; /* 0 vertex, 1 edge, 2 face */
-} proxContact;
-
 /* The tool's contacts after the last step (while the threads run: local
  * tracking's latest): copies up to `capacity` into
  * `contacts` (may be NULL when capacity is 0) and sets *count to how many
  * there are; PROX_ERROR_CAPACITY when they did not all fit. Game thread. */
 PROX_API proxResult proxBody_GetContacts(proxBodyId tool, proxContact* contacts, int32_t capacity,
                                          int32_t* count);
-
-/* The patch a contact stands for (docs/patches.md): where the distance
- * field is flat, LMDs merge into the closest of them, which weighs their
- * count in the force. */
-typedef struct proxContactPatch {
-  int32_t count; /* LMDs the contact stands for, itself included: 1 when nothing merged into it */
-  int32_t reserved;
-  double extent; /* m: how far the farthest member's point on the tool is from the contact's */
-  double spread; /* m: how much farther from the other body the farthest member is */
-  double angle;  /* radians: the largest angle between a member's direction and the contact's */
-} proxContactPatch;
 
 /* proxBody_GetContacts with each contact's patch beside it, both from one
  * snapshot (so they agree while the threads run): patches[i] is the patch
@@ -431,23 +207,9 @@ typedef struct proxContactPatch {
 PROX_API proxResult proxBody_GetContactPatches(proxBodyId tool, proxContact* contacts,
                                                proxContactPatch* patches, int32_t capacity, int32_t* count);
 
-typedef struct proxWrench {
-  proxVec3 force;  /* N, on the tool, world frame */
-  proxVec3 torque; /* N m, on the tool about its reference point, world frame */
-  proxBool clipped;
-} proxWrench;
-
 /* The force and torque on a tool after the last step (while the threads
  * run: what the haptic loop last handed the device). Game thread. */
 PROX_API proxResult proxBody_GetWrench(proxBodyId tool, proxWrench* wrench);
-
-typedef struct proxPolylineInfo {
-  proxBodyId other;   /* the body the tool's surface crosses */
-  int32_t firstPoint; /* index of its first point in the points array */
-  int32_t pointCount;
-  proxBool closed; /* the last point joins the first */
-  int32_t reserved;
-} proxPolylineInfo;
 
 /* Where the tool's surface crosses other bodies' surfaces, at their current
  * poses: computed on this call (intersections cost nothing unless asked
@@ -461,28 +223,8 @@ PROX_API proxResult proxBody_GetIntersections(proxBodyId tool, proxVec3* points,
                                               int32_t* pointCount, proxPolylineInfo* lines,
                                               int32_t lineCapacity, int32_t* lineCount);
 
-typedef struct proxWorldStats {
-  int32_t bodies, tools;
-  int32_t pairsInRange;  /* tool-body pairs the broadphase kept in the last step */
-  int32_t pairsSearched; /* ... of which ran a global search (the others had not moved) */
-  int32_t contacts;      /* over all tools */
-  int32_t candidates;    /* before reduction, over the pairs searched */
-  double stepSeconds;
-} proxWorldStats;
-
 /* Game thread. */
 PROX_API proxResult proxWorld_GetStats(proxWorldId world, proxWorldStats* stats);
-
-/* Patches (docs/patches.md): after the reduction, LMDs whose closest points
- * on the tool lie within a radius of the closest one's and whose directions
- * agree within an angle merge into one contact, the closest, which weighs
- * the patch's count in the force. */
-typedef struct proxPatchSettings {
-  double radiusOverCutoff; /* the radius as a share of the world's cutoff, finite, >= 0; 0: no merging */
-  double maxAngleDegrees;  /* in [0, 180] */
-  /* members at most this share of the cutoff farther than the closest, finite, >= 0 */
-  double maxSpreadOverCutoff;
-} proxPatchSettings;
 
 /* The world's patch rule (the default: radius = the cutoff, 5 degrees, a
  * spread of 0.2% of the cutoff). Game thread. */
@@ -490,25 +232,6 @@ PROX_API proxResult proxWorld_GetPatchSettings(proxWorldId world, proxPatchSetti
 /* Changes it from the next proxWorld_Step on (PROX_ERROR_BUSY while the
  * threads run). Game thread. */
 PROX_API proxResult proxWorld_SetPatchSettings(proxWorldId world, const proxPatchSettings* settings);
-
-typedef struct proxPatchStats {
-  /* Over the pairs searched in the last step (while the threads run: the
-   * global thread's last search): */
-  int32_t lmds;         /* LMDs after the reduction, before merging */
-  int32_t patches;      /* contacts kept: one per patch */
-  int32_t merged;       /* lmds - patches: LMDs folded into a closer one's patch */
-  int32_t largestPatch; /* LMDs in the largest patch */
-  /* Triangle pairs the global searches found crossing: an intersection of
-   * the two bodies, reported here and never as contacts
-   * (proxBody_GetIntersections traces it). */
-  uint64_t intersectingPairs;
-  int32_t intersectingBodies; /* pairs searched with any */
-  /* Node pairs the bounded search cut (proxWorld_SetLeafBudget): each gave
-   * one representative instead of all its LMDs, which are then not counted
-   * in lmds (the force errs low there). 0 when every search stayed within
-   * its budget. */
-  int32_t cutNodePairs;
-} proxPatchStats;
 
 /* Game thread. */
 PROX_API proxResult proxWorld_GetPatchStats(proxWorldId world, proxPatchStats* stats);
