@@ -391,7 +391,7 @@ Figures run_one(const SceneSpec& scene, proxForcePreset preset, proxToolMode mod
     replay_exact(world, bd, *device, first, stop, exact, exact_proxy);
     compare_exact(device->time, rendered, exact, proxy, exact_proxy, first, stop, f);
   }
-  check(proxDestroyWorld(world), "destroy");
+  check(proxWorld_Destroy(world), "destroy");
   double last[3] = {0.0, 0.0, 0.0};
   for (std::size_t i = 0; i < f.ticks; ++i) {
     const double F[3] = {device->fx[i], device->fy[i], device->fz[i]};

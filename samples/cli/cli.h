@@ -165,7 +165,7 @@ class Scene {
     destroy_on_failure([&] { mesh_a_ = load(path, load_seconds); });
   }
   ~Scene() {
-    if (proxWorld_IsValid(world_)) proxDestroyWorld(world_);
+    if (proxWorld_IsValid(world_)) proxWorld_Destroy(world_);
   }
   Scene(const Scene&) = delete;
   Scene& operator=(const Scene&) = delete;
@@ -204,7 +204,7 @@ class Scene {
     try {
       build();
     } catch (...) {
-      proxDestroyWorld(world_);
+      proxWorld_Destroy(world_);
       throw;
     }
   }

@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
          (unsigned long long)record.reads, (unsigned long long)record.writes, record.maxForce,
          record.maxForceStep, record.allFinite ? "all finite" : "NOT ALL FINITE");
 
-  proxDestroyWorld(world);
+  proxWorld_Destroy(world);
   /* The sample fails (for its test) if nothing was felt or anything was off. */
   return felt > 0.0 && record.allFinite && record.maxForce <= world_def.force.maxForce ? 0 : 1;
 }

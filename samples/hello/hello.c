@@ -84,6 +84,6 @@ int main(int argc, char** argv) {
   printf("torque on the tool: (%.5f, %.5f, %.5f) N m\n", wrench.torque.x, wrench.torque.y, wrench.torque.z);
 
   /* 6. Destroying the world destroys everything in it. */
-  if (!ok(proxDestroyWorld(world), "proxDestroyWorld")) return 1;
+  if (!ok(proxWorld_Destroy(world), "proxWorld_Destroy")) return 1;
   return count > 0 ? 0 : 2; /* the scene is built to be in contact */
 }

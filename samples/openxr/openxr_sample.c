@@ -436,7 +436,7 @@ int main(int argc, char** argv) {
   proxXrDeviceStats st;
   if (!ok(proxXrDevice_GetStats(app.device, &st), "proxXrDevice_GetStats")) return 1;
   if (!ok(proxXrDevice_Destroy(app.device), "proxXrDevice_Destroy")) return 1;
-  proxDestroyWorld(world);
+  proxWorld_Destroy(world);
   xrDestroySpace(app.local);
   xrDestroySession(app.session);
   xrDestroyActionSet(app.set);

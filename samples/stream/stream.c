@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
       (unsigned long long)stats.samplesPushed, (unsigned long long)stats.samplesDropped,
       stats.meanSampleInterval * 1e3, stats.maxSampleInterval * 1e3, (unsigned long long)stats.reads,
       (unsigned long long)stats.extrapolatedTicks);
-  proxDestroyWorld(world);
+  proxWorld_Destroy(world);
   /* The sample fails (for its test) if nothing was felt or anything was off. */
   return felt > 0.0 && finite && felt <= world_def.force.maxForce && stats.reads > stats.samplesPushed ? 0
                                                                                                        : 1;

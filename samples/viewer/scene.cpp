@@ -62,13 +62,13 @@ Scene::Scene(const Options& options, const std::string& path_a, const std::strin
   try {
     build(options, path_a, path_b);
   } catch (...) {
-    proxDestroyWorld(world_);  // a constructor that throws runs no destructor
+    proxWorld_Destroy(world_);  // a constructor that throws runs no destructor
     throw;
   }
 }
 
 Scene::~Scene() {
-  if (proxWorld_IsValid(world_)) proxDestroyWorld(world_);
+  if (proxWorld_IsValid(world_)) proxWorld_Destroy(world_);
 }
 
 void Scene::build(const Options& options, const std::string& path_a, const std::string& path_b) {

@@ -39,7 +39,7 @@ class CApi : public ::testing::Test {
     ASSERT_OK(proxWorld_CreateMesh(world, &md, &mesh));
   }
   void TearDown() override {
-    if (proxWorld_IsValid(world)) EXPECT_OK(proxDestroyWorld(world));
+    if (proxWorld_IsValid(world)) EXPECT_OK(proxWorld_Destroy(world));
   }
   proxBodyId body(proxBodyType type, const proxPose& pose) {
     proxBodyDef d = proxDefaultBodyDef();

@@ -66,7 +66,7 @@ TEST(CApiBasics, CreateWorldValidatesTheDef) {
   for (int32_t minor = 4; minor <= PROX_VERSION_MINOR; ++minor) {
     def.apiVersion = (PROX_VERSION_MAJOR << 16) | minor;
     ASSERT_EQ(proxCreateWorld(&def, &w), PROX_SUCCESS) << "a def of version 0." << minor << ": " << proxGetLastError();
-    ASSERT_OK(proxDestroyWorld(w));
+    ASSERT_OK(proxWorld_Destroy(w));
   }
   def = proxDefaultWorldDef();
   struct Bad {
@@ -98,9 +98,9 @@ TEST(CApiBasics, StaleAndNullWorldIds) {
   proxWorldId w{};
   ASSERT_OK(proxCreateWorld(&def, &w));
   EXPECT_TRUE(proxWorld_IsValid(w));
-  ASSERT_OK(proxDestroyWorld(w));
+  ASSERT_OK(proxWorld_Destroy(w));
   EXPECT_FALSE(proxWorld_IsValid(w));
-  EXPECT_FAILS(proxDestroyWorld(w), PROX_ERROR_INVALID_HANDLE, "live world");
+  EXPECT_FAILS(proxWorld_Destroy(w), PROX_ERROR_INVALID_HANDLE, "live world");
   EXPECT_FAILS(proxWorld_Step(w), PROX_ERROR_INVALID_HANDLE, "live world");
   EXPECT_FAILS(proxWorld_Step(proxWorldId{}), PROX_ERROR_INVALID_HANDLE, "null");
   proxWorldStats stats;
@@ -109,7 +109,17 @@ TEST(CApiBasics, StaleAndNullWorldIds) {
   proxWorldId again{};
   ASSERT_OK(proxCreateWorld(&def, &again));
   EXPECT_FALSE(proxWorld_IsValid(w));
-  EXPECT_OK(proxDestroyWorld(again));
+  EXPECT_OK(proxWorld_Destroy(again));
+}
+
+// The deprecated name still destroys a world, and names itself when refused.
+TEST(CApiBasics, DestroyWorldIsProxWorldDestroysDeprecatedName) {
+  proxWorldDef def = proxDefaultWorldDef();
+  proxWorldId w{};
+  ASSERT_OK(proxCreateWorld(&def, &w));
+  ASSERT_OK(proxDestroyWorld(w));
+  EXPECT_FALSE(proxWorld_IsValid(w));
+  EXPECT_FAILS(proxDestroyWorld(w), PROX_ERROR_INVALID_HANDLE, "proxDestroyWorld");
 }
 
 TEST_F(CApi, CallsFromAnotherThreadAreRefused) {
@@ -118,7 +128,7 @@ TEST_F(CApi, CallsFromAnotherThreadAreRefused) {
   std::thread([&] {
     step = proxWorld_Step(world);
     message = proxGetLastError();
-    destroy = proxDestroyWorld(world);
+    destroy = proxWorld_Destroy(world);
   }).join();
   EXPECT_EQ(step, PROX_ERROR_WRONG_THREAD);
   EXPECT_EQ(destroy, PROX_ERROR_WRONG_THREAD);
@@ -157,7 +167,7 @@ TEST_F(CApi, MeshAndBodyIdsSayWhetherTheyAreValid) {
   EXPECT_FALSE(proxMesh_IsValid(mesh));
   // A destroyed world's ids.
   const proxMeshId stale_world_mesh = mesh;
-  ASSERT_OK(proxDestroyWorld(world));
+  ASSERT_OK(proxWorld_Destroy(world));
   EXPECT_FALSE(proxMesh_IsValid(stale_world_mesh));
   EXPECT_NE(std::string(proxGetLastError()).find("live world"), std::string::npos);
 }
@@ -259,7 +269,7 @@ TEST_F(CApi, CreateBodyValidatesTheDef) {
   d = proxDefaultBodyDef();
   d.mesh = foreign;
   EXPECT_FAILS(proxWorld_CreateBody(world, &d, &b), PROX_ERROR_INVALID_HANDLE, "another world");
-  EXPECT_OK(proxDestroyWorld(other));
+  EXPECT_OK(proxWorld_Destroy(other));
   // Ids of bodies of a destroyed world are stale.
   EXPECT_FAILS(proxWorld_CreateBody(other, &d, &b), PROX_ERROR_INVALID_HANDLE, "live world");
 }

@@ -27,7 +27,7 @@ class Coupling : public ::testing::Test {
     a.mesh = big_;
     ASSERT_OK(proxWorld_CreateBody(world_, &a, &obstacle_));
   }
-  void TearDown() override { EXPECT_OK(proxDestroyWorld(world_)); }
+  void TearDown() override { EXPECT_OK(proxWorld_Destroy(world_)); }
 
   // A closed cube of half-size h about the origin, wound outwards.
   proxMeshId cube(double h) {

@@ -31,7 +31,7 @@ TEST(CApiForcePresetAt, ScalesTheSafetyDistanceAndDecayWithTheCutoff) {
     def.cutoff = 3.0 * cutoff;
     proxWorldId w{};
     ASSERT_OK(proxCreateWorld(&def, &w));
-    ASSERT_OK(proxDestroyWorld(w));
+    ASSERT_OK(proxWorld_Destroy(w));
   }
 }
 

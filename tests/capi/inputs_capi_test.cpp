@@ -27,7 +27,7 @@ class World : public ::testing::Test {
     const proxWorldDef def = proxDefaultWorldDef();
     ASSERT_OK(proxCreateWorld(&def, &world_));
   }
-  void TearDown() override { EXPECT_OK(proxDestroyWorld(world_)); }
+  void TearDown() override { EXPECT_OK(proxWorld_Destroy(world_)); }
 
   proxMeshId triangle(double scale = 1.0) {
     const double positions[] = {0, 0, 0, scale, 0, 0, 0, scale, 0};

@@ -50,7 +50,7 @@ TEST(CApiInspection, ForcePresets) {
   soft.cutoff = cutoff;
   proxWorldId w{};
   ASSERT_OK(proxCreateWorld(&soft, &w));
-  EXPECT_OK(proxDestroyWorld(w));
+  EXPECT_OK(proxWorld_Destroy(w));
 }
 
 TEST_F(CApi, MeshStats) {
@@ -112,7 +112,7 @@ TEST_F(CApi, SearchStatsOfTheLastStep) {
   EXPECT_EQ(s.pairsSearched, 0);
   EXPECT_EQ(s.nodePairs, 0u);
   EXPECT_EQ(s.candidates, 0u);
-  ASSERT_OK(proxDestroyWorld(world));
+  ASSERT_OK(proxWorld_Destroy(world));
   EXPECT_FAILS(proxWorld_GetSearchStats(world, &s), PROX_ERROR_INVALID_HANDLE, "live world");
 }
 
@@ -150,7 +150,7 @@ TEST(CApiInspection, TheReferenceMethodAgreesWithThePreciseOne) {
     EXPECT_EQ(c[0].featureTool, 0);   // B's vertex
     EXPECT_EQ(c[0].featureOther, 2);  // over A's face
     distance[m] = c[0].distance;
-    EXPECT_OK(proxDestroyWorld(w));
+    EXPECT_OK(proxWorld_Destroy(w));
   }
   EXPECT_NEAR(distance[0], 0.002, 1e-12);
   EXPECT_EQ(distance[0], distance[1]);
@@ -206,7 +206,7 @@ TEST_F(CApi, TrackCarriesContactsToTheCurrentPoses) {
   EXPECT_EQ(count, 0);
   ASSERT_OK(proxBody_GetWrench(tool, &near));
   EXPECT_EQ(near.force.z, 0.0);
-  ASSERT_OK(proxDestroyWorld(world));
+  ASSERT_OK(proxWorld_Destroy(world));
   EXPECT_FAILS(proxWorld_Track(world), PROX_ERROR_INVALID_HANDLE, "live world");
   EXPECT_FAILS(proxWorld_GetTrackStats(world, &t), PROX_ERROR_INVALID_HANDLE, "live world");
 }
@@ -277,7 +277,7 @@ TEST_F(CApi, DistanceBetweenTwoBodies) {
   proxBodyId foreign{};
   ASSERT_OK(proxWorld_CreateBody(other, &bd, &foreign));
   EXPECT_FAILS(proxBody_GetDistance(rock, foreign, 1.0, &d), PROX_ERROR_INVALID_HANDLE, "different worlds");
-  EXPECT_OK(proxDestroyWorld(other));
+  EXPECT_OK(proxWorld_Destroy(other));
   EXPECT_FAILS(proxBody_GetDistance(rock, foreign, 1.0, &d), PROX_ERROR_INVALID_HANDLE, "live world");
   ASSERT_OK(proxBody_Destroy(far));
   EXPECT_FAILS(proxBody_GetDistance(rock, far, 1.0, &d), PROX_ERROR_INVALID_HANDLE, "live body");

@@ -32,7 +32,7 @@ class LoneTool : public ::testing::Test {
     ASSERT_OK(proxWorld_CreateBody(world, &bd, &tool));
   }
   void TearDown() override {
-    if (proxWorld_IsValid(world)) EXPECT_OK(proxDestroyWorld(world));
+    if (proxWorld_IsValid(world)) EXPECT_OK(proxWorld_Destroy(world));
   }
 
   proxWorldId world{};

@@ -80,7 +80,7 @@ class MeshTriangles : public ::testing::Test {
     const proxWorldDef def = proxDefaultWorldDef();
     ASSERT_OK(proxCreateWorld(&def, &world_));
   }
-  void TearDown() override { EXPECT_OK(proxDestroyWorld(world_)); }
+  void TearDown() override { EXPECT_OK(proxWorld_Destroy(world_)); }
   proxWorldId world_{};
 };
 

@@ -35,7 +35,7 @@ class Patches : public ::testing::Test {
     ASSERT_OK(proxWorld_CreateBody(world, &b, &tool));
   }
   void TearDown() override {
-    if (proxWorld_IsValid(world)) EXPECT_OK(proxDestroyWorld(world));
+    if (proxWorld_IsValid(world)) EXPECT_OK(proxWorld_Destroy(world));
   }
   int32_t contact_count() {
     int32_t n = 0;

@@ -32,7 +32,7 @@ struct Fixture {
     proxWorldDef def = proxDefaultWorldDef();
     EXPECT_EQ(proxCreateWorld(&def, &world), PROX_SUCCESS) << proxGetLastError();
   }
-  ~Fixture() { proxDestroyWorld(world); }
+  ~Fixture() { proxWorld_Destroy(world); }
   proxMeshId load(const std::string& relative) {
     proxMeshId mesh{};
     EXPECT_EQ(proxWorld_LoadMesh(world, asset(relative).c_str(), &mesh), PROX_SUCCESS) << proxGetLastError();

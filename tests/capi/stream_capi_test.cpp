@@ -91,7 +91,7 @@ class Stream : public capi_test::TwoCubes {
   }
   void TearDown() override {
     stop_engine();
-    if (proxWorld_IsValid(world)) EXPECT_OK(proxDestroyWorld(world));
+    if (proxWorld_IsValid(world)) EXPECT_OK(proxWorld_Destroy(world));
   }
 
   void create(proxStreamMode mode, double stale_after = 0.05) {
@@ -289,7 +289,7 @@ TEST_F(Stream, ADeviceHoldsOnlyItsOwnWorldsTools) {
   ASSERT_OK(proxWorld_CreateScriptedDevice(other, &scd, &scripted));
   ASSERT_OK(proxScriptedDevice_GetDeviceDef(scripted, &def));
   EXPECT_FAILS(proxBody_SetDevice(tool, &def), PROX_ERROR_INVALID_ARGUMENT, "another world");
-  ASSERT_OK(proxDestroyWorld(other));
+  ASSERT_OK(proxWorld_Destroy(other));
   // This world's own device still holds the tool, and runs.
   ASSERT_OK(proxStreamDevice_GetDeviceDef(device, &def));
   EXPECT_OK(proxBody_SetDevice(tool, &def));
@@ -395,7 +395,7 @@ TEST_F(Stream, ThreadRulesAndTheWorldsEnd) {
   });
   ASSERT_OK(proxWorld_StartThreads(world, &threads));
   sleep_seconds(0.05);
-  ASSERT_OK(proxDestroyWorld(world));
+  ASSERT_OK(proxWorld_Destroy(world));
   EXPECT_TRUE(wait_until([&] { return invalid.load(); }));
   stop = true;
   pusher.join();

@@ -322,7 +322,7 @@ TEST_F(Threads, AScriptedApproachFeelsTheWallAsTheStepDoes) {
   ASSERT_OK(proxBody_SetDevice(tool, &c));
   ASSERT_OK(proxWorld_StartThreads(world, &def));
   EXPECT_TRUE(wait_until([&] { return std::abs(fixed.last_x.load() - expected.force.x) < 1e-9; }));
-  EXPECT_OK(proxDestroyWorld(world));
+  EXPECT_OK(proxWorld_Destroy(world));
   EXPECT_TRUE(fixed.finite.load());
   EXPECT_EQ(fixed.last_x.load(), 0.0);
   const int writes = fixed.writes.load();
@@ -399,7 +399,7 @@ TEST(ThreadsPatches, ParallelSheetsReachTheHapticLoopAsPatches) {
   EXPECT_EQ(safety.tornSnapshots, 0u);
   EXPECT_OK(proxWorld_StopThreads(world));
   EXPECT_TRUE(fixed.finite.load());
-  EXPECT_OK(proxDestroyWorld(world));
+  EXPECT_OK(proxWorld_Destroy(world));
 }
 
 }  // namespace

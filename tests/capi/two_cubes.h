@@ -57,7 +57,7 @@ class TwoCubes : public ::testing::Test {
     ASSERT_OK(proxWorld_CreateBody(world, &bd, &tool));
   }
   void TearDown() override {
-    if (proxWorld_IsValid(world)) EXPECT_OK(proxDestroyWorld(world));
+    if (proxWorld_IsValid(world)) EXPECT_OK(proxWorld_Destroy(world));
   }
 
   // The cube's 8 corners and 12 triangles, for another mesh like it.

@@ -25,7 +25,7 @@ TEST(Workers, TheCountIsCheckedAndDefaultsToOne) {
   }
   def.workerCount = 256;
   ASSERT_OK(proxCreateWorld(&def, &w));
-  EXPECT_OK(proxDestroyWorld(w));
+  EXPECT_OK(proxWorld_Destroy(w));
 }
 
 // One world's scene: a 16,200-triangle sheet (large enough to be split)
@@ -57,7 +57,7 @@ struct Scene {
     body.pose.position = {0.09, 0.09, 0.003};
     EXPECT_OK(proxWorld_CreateBody(world, &body, &tool));
   }
-  ~Scene() { EXPECT_OK(proxDestroyWorld(world)); }
+  ~Scene() { EXPECT_OK(proxWorld_Destroy(world)); }
 
   // Frame f of the wave, then a step; the tool's contacts.
   std::vector<proxContact> frame(int f) {

@@ -99,7 +99,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         break;
       }
       case 1:
-        CALL(proxDestroyWorld(pick(in, worlds)));
+        CALL(proxWorld_Destroy(pick(in, worlds)));
         break;
       case 2: {
         proxMeshId mesh;
@@ -266,6 +266,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Destroying a world stops its threads and frees everything in it.
   for (const proxWorldId world : worlds)
     if (proxWorld_IsValid(world))
-      PROX_FUZZ_CHECK(proxDestroyWorld(world) == PROX_SUCCESS, "%s", proxGetLastError());
+      PROX_FUZZ_CHECK(proxWorld_Destroy(world) == PROX_SUCCESS, "%s", proxGetLastError());
   return 0;
 }

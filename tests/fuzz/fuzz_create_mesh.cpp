@@ -108,6 +108,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       PROX_FUZZ_CHECK(std::isfinite(distance) && distance >= 0, "distance %g", distance);
     }
   }
-  PROX_FUZZ_CHECK(proxDestroyWorld(world) == PROX_SUCCESS, "%s", proxGetLastError());
+  PROX_FUZZ_CHECK(proxWorld_Destroy(world) == PROX_SUCCESS, "%s", proxGetLastError());
   return 0;
 }

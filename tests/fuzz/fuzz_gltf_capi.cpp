@@ -55,6 +55,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                       "%u triangles from the file, %u from memory", a.triangleCount, b.triangleCount);
     }
   }
-  PROX_FUZZ_CHECK(proxDestroyWorld(world) == PROX_SUCCESS, "%s", proxGetLastError());
+  PROX_FUZZ_CHECK(proxWorld_Destroy(world) == PROX_SUCCESS, "%s", proxGetLastError());
   return 0;
 }

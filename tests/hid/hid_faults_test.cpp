@@ -524,8 +524,8 @@ TEST_F(HidThreads, AnotherWorldsDeviceIsRefusedAndDestroyingTheWorldClosesIt) {
   proxBodyId t;
   ASSERT_OK(proxWorld_CreateBody(second, &bd, &t));
   EXPECT_FAILS(proxBody_SetDevice(t, &dd), PROX_ERROR_INVALID_ARGUMENT, "another world");
-  ASSERT_OK(proxDestroyWorld(second));
-  ASSERT_OK(proxDestroyWorld(world));
+  ASSERT_OK(proxWorld_Destroy(second));
+  ASSERT_OK(proxWorld_Destroy(world));
   proxHidDeviceStats s;
   EXPECT_EQ(proxHidDevice_GetStats(device, &s), PROX_ERROR_INVALID_HANDLE);
 }

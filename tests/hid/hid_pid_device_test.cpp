@@ -321,7 +321,7 @@ TEST(PidWheel, TurnsTheToolAboutItsAxle) {
   const std::vector<EmulatedPid::Effect> e = model->effects();
   EXPECT_EQ(e[0].direction, 9000);
   EXPECT_EQ(model->errors(), "");
-  ASSERT_OK(proxDestroyWorld(world));
+  ASSERT_OK(proxWorld_Destroy(world));
 }
 
 INSTANTIATE_TEST_SUITE_P(Firmwares, PidDevices, ::testing::Values(kOpenFfb, kArduino),

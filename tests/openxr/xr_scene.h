@@ -82,7 +82,7 @@ class XrScene {
     prox_check(proxWorld_CreateBody(world, &bd, &tool), "proxWorld_CreateBody");
   }
   ~XrScene() {
-    if (proxWorld_IsValid(world)) proxDestroyWorld(world);
+    if (proxWorld_IsValid(world)) proxWorld_Destroy(world);
   }
 
   // Tool poses in Proxima's world: far from the rock, and a few mm from it

@@ -68,6 +68,6 @@ int main(int argc, char** argv) {
     check(proxBody_GetContacts(tool, buffer, 64, &count), "proxBody_GetContacts");
   }
   printf("c,moving,%d,%d,%.1f\n", moving, contacts, (now() - t0) * 1e9 / moving);
-  proxDestroyWorld(world);
+  proxWorld_Destroy(world);
   return 0;
 }

@@ -68,6 +68,6 @@ int main(int argc, char** argv) {
   }
   qsort(medians, 5, sizeof medians[0], compare);
   printf("%.3f %d\n", medians[2], (int)count);
-  proxDestroyWorld(world);
+  proxWorld_Destroy(world);
   return 0;
 }

@@ -80,7 +80,7 @@ class World:
         """Destroys the world and everything in it (stopping its threads
         first). Its meshes, bodies and devices then raise InvalidHandle."""
         if self._idp is not None and lib.proxWorld_IsValid(self._idp[0]):
-            check(lib.proxDestroyWorld(self._idp[0]))
+            check(lib.proxWorld_Destroy(self._idp[0]))
 
     @property
     def closed(self):
@@ -103,7 +103,7 @@ class World:
                           "created it and could not be destroyed: close it on its own thread",
                           ResourceWarning, stacklevel=2)
             return
-        lib.proxDestroyWorld(self._idp[0])
+        lib.proxWorld_Destroy(self._idp[0])
 
     def __repr__(self):
         state = "closed" if self.closed else f"method={self._method!r}, cutoff={self._cutoff!r}"

@@ -235,7 +235,7 @@ def test_world_dropped_on_another_thread_warns_and_is_kept():
     assert any(issubclass(w.category, ResourceWarning) and "other than the one that created it" in str(w.message)
                for w in caught)
     assert lib.proxWorld_IsValid(world_id[0])
-    assert lib.proxDestroyWorld(world_id[0]) == 0
+    assert lib.proxWorld_Destroy(world_id[0]) == 0
 
 
 def test_wrong_thread(world):

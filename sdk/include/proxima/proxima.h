@@ -45,6 +45,8 @@ extern "C" {
 PROX_API proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world);
 /* Destroys a world and everything in it, stopping its threads first (the
  * devices fade out). Game thread. */
+PROX_API proxResult proxWorld_Destroy(proxWorldId world);
+/* Deprecated: proxWorld_Destroy under its old name (kept until at least 0.5). */
 PROX_API proxResult proxDestroyWorld(proxWorldId world);
 /* Whether an id names a live world. Any thread. */
 PROX_API proxBool proxWorld_IsValid(proxWorldId world);

@@ -27,6 +27,19 @@ namespace {
 // their end.
 constexpr int32_t kOldestCompatibleMinor = 4;
 
+void destroy_world(proxWorldId world) {
+  world_of(world);  // validates id and thread
+  std::unique_ptr<runtime::World> doomed;
+  {
+    std::lock_guard<std::mutex> lock(g_worlds_mutex);
+    doomed = std::move(g_worlds[world.index1 - 1].world);
+  }
+  // No device callback runs once the threads stop; then no other thread
+  // may still hold one of the world's streamed devices.
+  doomed->stop_threads();
+  release_devices(world);
+}
+
 }  // namespace
 
 proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
@@ -72,19 +85,12 @@ proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
   });
 }
 
+proxResult proxWorld_Destroy(proxWorldId world) {
+  return guard("proxWorld_Destroy", [&] { destroy_world(world); });
+}
+
 proxResult proxDestroyWorld(proxWorldId world) {
-  return guard("proxDestroyWorld", [&] {
-    world_of(world);  // validates id and thread
-    std::unique_ptr<runtime::World> doomed;
-    {
-      std::lock_guard<std::mutex> lock(g_worlds_mutex);
-      doomed = std::move(g_worlds[world.index1 - 1].world);
-    }
-    // No device callback runs once the threads stop; then no other thread
-    // may still hold one of the world's streamed devices.
-    doomed->stop_threads();
-    release_devices(world);
-  });
+  return guard("proxDestroyWorld", [&] { destroy_world(world); });
 }
 
 proxBool proxWorld_IsValid(proxWorldId world) {

@@ -59,7 +59,7 @@ namespace Proxima
         public void Dispose()
         {
             if (!Native.proxWorld_IsValid(id)) return;
-            Native.Check(Native.proxDestroyWorld(id));
+            Native.Check(Native.proxWorld_Destroy(id));
             Device.ReleaseAll(id);
         }
 

@@ -11,6 +11,8 @@ namespace Proxima
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxCreateWorld(ref WorldDef def, out WorldId world);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxWorld_Destroy(WorldId world);
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxDestroyWorld(WorldId world);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Bool32 proxWorld_IsValid(WorldId world);
