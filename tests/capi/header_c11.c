@@ -24,7 +24,7 @@ _Static_assert(sizeof(proxDeviceDef) == 48, "proxDeviceDef");
 _Static_assert(sizeof(proxScriptedDeviceId) == 16, "proxScriptedDeviceId");
 _Static_assert(sizeof(proxScriptedDeviceDef) == 32, "proxScriptedDeviceDef");
 _Static_assert(sizeof(proxScriptedDeviceRecord) == 104, "proxScriptedDeviceRecord");
-_Static_assert(sizeof(proxThreadsDef) == 104, "proxThreadsDef");
+_Static_assert(sizeof(proxThreadsDef) == 112, "proxThreadsDef");
 _Static_assert(sizeof(proxThreadStats) == 120, "proxThreadStats");
 _Static_assert(sizeof(proxSafetyStats) == 48, "proxSafetyStats");
 _Static_assert(sizeof(proxThread) == 4, "enums are 32-bit");

@@ -57,6 +57,28 @@ TEST_F(ThreadsTest, ApproachAndRestAgreeWithTheDeterministicStep) {
   EXPECT_EQ(contacts.size(), expected_.lmds.size());
 }
 
+// The global search split over two helpers finds what one thread finds:
+// at rest, the deterministic step's contacts.
+TEST_F(ThreadsTest, GlobalSearchOnTwoWorkersAgreesWithTheDeterministicStep) {
+  settings_.global_workers = 2;
+  FaultyDevice* device = nullptr;
+  start_and_settle(device);
+  std::vector<Contact> contacts;
+  EXPECT_TRUE(wait_until([&] {
+    world_->contacts(tool_, contacts);
+    return contacts.size() == expected_.lmds.size();
+  }));
+  std::vector<double> found, expected;
+  for (const Contact& c : contacts) found.push_back(c.lmd.distance);
+  for (const LmdPair& p : expected_.lmds) expected.push_back(p.distance);
+  std::sort(found.begin(), found.end());
+  std::sort(expected.begin(), expected.end());
+  ASSERT_EQ(found.size(), expected.size());
+  for (std::size_t i = 0; i < found.size(); ++i) EXPECT_NEAR(found[i], expected[i], 1e-15) << "contact " << i;
+  EXPECT_TRUE(at_rest_force());
+  expect_safe_output();
+}
+
 // Every thread at 4 Hz sleeps a quarter of a second between iterations:
 // stopping wakes them rather than waiting for the end of the period, and
 // the haptic loop fades the force out in ticks of a millisecond, not in its
@@ -306,6 +328,8 @@ TEST_F(ThreadsTest, BadSettingsAreRefusedByName) {
       {[](ThreadSettings& s) { s.max_contacts = 0; }, "contacts"},
       {[](ThreadSettings& s) { s.max_contacts = 1 << 30; }, "contacts"},
       {[](ThreadSettings& s) { s.cores[1] = 4096; }, "local thread's core"},
+      {[](ThreadSettings& s) { s.global_workers = 0; }, "global workers"},
+      {[](ThreadSettings& s) { s.global_workers = 257; }, "global workers"},
   };
   for (const Case& c : cases) {
     ThreadSettings s;

@@ -271,6 +271,8 @@ def test_bad_thread_and_device_arguments(world):
         world.start_threads(haptic_timing="busy")
     with raises(proxima.InvalidArgument, "start_threads: lock_memory must be True or False, not 1"):
         world.start_threads(lock_memory=1)
+    with raises(proxima.InvalidArgument, "global workers must be in"):
+        world.start_threads(global_worker_count=0)
     with raises(proxima.InvalidArgument, "poseCount must be >= 1"):
         world.create_scripted_device([], 0.1)
     with raises(proxima.InvalidArgument, "must be a \\(K, 7\\) array"):

@@ -31,7 +31,8 @@ def test_threads_with_the_scripted_device(world, bunny):
     device = world.create_scripted_device(_approach(), seconds_per_pose=0.004, loop=False)
     tool.set_device(device)
     assert not world.thread_stats("haptic").running
-    world.start_threads(haptic_rate=1000, local_rate=1000)
+    # The global search on two threads: the contacts are the same.
+    world.start_threads(haptic_rate=1000, local_rate=1000, global_worker_count=2)
     try:
         assert world.thread_stats("haptic").running
         # The path takes 0.2 s; then the device holds the last pose.

@@ -66,16 +66,22 @@ typedef struct proxThreadsDef {
    * proxBody_GetHapticTrace, in [0, 1048576] (192 bytes a tick, reserved
    * when the threads start). 0 (the default): off. */
   int32_t traceCapacity;
+  /* Threads the global search splits each pair's search over, itself
+   * included, in [1, 256] (default 1). Its helpers are plain threads,
+   * neither pinned nor prioritised: leave the haptic and local threads
+   * their cores (on two cores, keep 1). The contacts are the same
+   * whatever the count (docs/benchmarks.md, "On every core"). */
+  int32_t globalWorkerCount;
 } proxThreadsDef;
 
 PROX_API proxThreadsDef proxDefaultThreadsDef(void);
 
 /* Starts the haptic, local tracking and global search threads. While they
- * run: meshes and bodies can be neither created nor destroyed, and
- * proxWorld_Step and proxBody_SetDevice are refused (PROX_ERROR_BUSY);
- * proxBody_SetPose moves static and movable bodies and tools no device
- * holds; contacts, wrench, pose and stats read the threads' latest results.
- * Game thread. */
+ * run: meshes and bodies come and go, meshes deform and tools change
+ * devices (docs/dynamic-scenes.md); proxWorld_Step is refused
+ * (PROX_ERROR_BUSY); proxBody_SetPose moves static and movable bodies and
+ * tools no device holds; contacts, wrench, pose and stats read the
+ * threads' latest results. Game thread. */
 PROX_API proxResult proxWorld_StartThreads(proxWorldId world, const proxThreadsDef* def);
 /* Fades every device's force out, then stops and joins the threads; the
  * last results stay readable. No effect when they do not run. Game thread. */

@@ -31,6 +31,7 @@ proxThreadsDef proxDefaultThreadsDef(void) {
   d.lockMemory = s.lock_memory ? 1 : 0;
   d.internalValue = kDefCookie;
   d.traceCapacity = s.trace_capacity;
+  d.globalWorkerCount = s.global_workers;
   return d;
 }
 
@@ -70,6 +71,7 @@ proxResult proxWorld_StartThreads(proxWorldId world, const proxThreadsDef* def) 
     s.realtime_priority[1] = def->localPriority;
     s.lock_memory = def->lockMemory != 0;
     s.trace_capacity = def->traceCapacity;
+    s.global_workers = def->globalWorkerCount;
     Status status;
     if (!w.start_threads(s, status)) {
       if (status.code() == StatusCode::InvalidArgument)

@@ -104,6 +104,8 @@ bool Threads::check(const ThreadSettings& s, Status& status) {
   if (s.max_contacts < 1 || s.max_contacts > kMaxContactsPerTool)
     return bad("maximum contacts per tool must be in [1, 1048576] (it is " + std::to_string(s.max_contacts) +
                ")");
+  if (s.global_workers < 1 || s.global_workers > 256)
+    return bad("global workers must be in [1, 256] (it is " + std::to_string(s.global_workers) + ")");
   if (s.trace_capacity < 0 || s.trace_capacity > kMaxTraceCapacity)
     return bad("trace capacity must be in [0, 1048576] ticks (it is " + std::to_string(s.trace_capacity) + ")");
   const double haptic_period = 1.0 / s.haptic_rate;

@@ -72,6 +72,9 @@ struct ThreadSettings {
   // The flight recorder: the last this many haptic ticks of each tool
   // (haptic_trace.h), reserved when the threads are made; 0: off.
   int trace_capacity = 0;
+  // Threads the global search splits each pair's search over, itself
+  // included, in [1, 256].
+  int global_workers = 1;
 };
 
 // Cores for the haptic and local threads on a machine with at least four

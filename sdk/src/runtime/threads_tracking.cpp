@@ -4,6 +4,7 @@
 // The haptic loop, the pacing and the game thread's side are in threads.cpp.
 #include "runtime/threads.h"
 
+#include "common/worker_pool.h"
 #include "coupling/haptic_proxy.h"
 
 #include <glm/geometric.hpp>
@@ -220,6 +221,10 @@ void Threads::global_main() {
   double deadline = now(), previous = -1.0;
   const WorldSettings& ws = world_.settings();
   GlobalPass pass(ws.method, ws.cutoff(), ws.patches);
+  // The global search's own helpers, where asked for: each pair's search
+  // split over them (never the haptic or local thread's cores by itself).
+  std::unique_ptr<WorkerPool> pool;
+  if (settings_.global_workers > 1) pool = std::make_unique<WorkerPool>(static_cast<unsigned>(settings_.global_workers));
   std::uint64_t sequence = 0;
   while (!stop_.load(std::memory_order_relaxed)) {
     if (wait_while_stalled(Role::Global)) {
@@ -252,7 +257,7 @@ void Threads::global_main() {
     for (Tool* tool : set.tools) {
       if (tool->retiring.load(std::memory_order_relaxed) != 0) continue;
       const int searched_before = stats.pairs_searched;
-      const std::vector<PairInRange>& in_range = pass.search(tool->body, view, stats);
+      const std::vector<PairInRange>& in_range = pass.search(tool->body, view, stats, pool.get());
       for (const PairInRange& p : in_range) stats.contacts += static_cast<int>(p.slot->lmds.size());
       // Nothing searched, the same pairs in range and no LMDs lost since:
       // the local thread already has this answer (and has tracked it

@@ -86,6 +86,11 @@ namespace Proxima
         // The flight recorder: keep each tool's last this many haptic ticks for proxBody_GetHapticTrace, in
         // [0, 1048576] (192 bytes a tick, reserved when the threads start). 0 (the default): off.
         public int TraceCapacity;
+        // Threads the global search splits each pair's search over, itself included, in [1, 256] (default 1).
+        // Its helpers are plain threads, neither pinned nor prioritised: leave the haptic and local threads
+        // their cores (on two cores, keep 1). The contacts are the same whatever the count
+        // (docs/benchmarks.md, "On every core").
+        public int GlobalWorkerCount;
     }
 
     /// <summary>proxThread</summary>
