@@ -17,7 +17,8 @@ int main(void) {
   const proxWorldDef world = proxDefaultWorldDef();
   const proxBodyDef body = proxDefaultBodyDef();
   const proxMeshId none = {0, 0, {0, 0}};
-  const int ok = v.major == PROX_VERSION_MAJOR && world.apiVersion == PROX_API_VERSION && body.type == PROX_BODY_STATIC &&
-                 none.index1 == 0 && proxResultString(PROX_SUCCESS)[0] == 'P' && proxGetLastError() != NULL;
+  const int ok = v.major == PROX_VERSION_MAJOR && world.apiVersion == PROX_API_VERSION &&
+                 body.type == PROX_BODY_STATIC && none.index1 == 0 && proxResultString(PROX_SUCCESS)[0] == 'P' &&
+                 proxGetLastError() != NULL;
   return ok ? 0 : 1;
 }

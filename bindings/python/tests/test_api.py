@@ -210,7 +210,8 @@ def _sheet(n, side):
     xs, ys = np.meshgrid(g, g)
     vertices = np.column_stack([xs.ravel(), ys.ravel(), np.zeros(xs.size)])
     a = (np.arange(n)[None, :] + (n + 1) * np.arange(n)[:, None]).ravel()
-    return vertices, np.concatenate([np.column_stack([a, a + 1, a + n + 2]), np.column_stack([a, a + n + 2, a + n + 1])])
+    triangles = np.concatenate([np.column_stack([a, a + 1, a + n + 2]), np.column_stack([a, a + n + 2, a + n + 1])])
+    return vertices, triangles
 
 
 def test_workers_split_a_deformation_and_give_the_same_contacts():

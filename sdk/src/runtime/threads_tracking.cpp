@@ -224,7 +224,8 @@ void Threads::global_main() {
   // The global search's own helpers, where asked for: each pair's search
   // split over them (never the haptic or local thread's cores by itself).
   std::unique_ptr<WorkerPool> pool;
-  if (settings_.global_workers > 1) pool = std::make_unique<WorkerPool>(static_cast<unsigned>(settings_.global_workers));
+  if (settings_.global_workers > 1)
+    pool = std::make_unique<WorkerPool>(static_cast<unsigned>(settings_.global_workers));
   std::uint64_t sequence = 0;
   while (!stop_.load(std::memory_order_relaxed)) {
     if (wait_while_stalled(Role::Global)) {
