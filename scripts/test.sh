@@ -87,7 +87,7 @@ cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threa
   proxima_hid_capi_tests proxima_hid_pid_device_tests proxima_openxr_tests proxima_coupling_threads_tests proxima_parallel_tests
 ctest --test-dir build/tsan --output-on-failure -L threads
 
-stage "fuzzers (libFuzzer, ASan + UBSan): each target 20 s on corpora from the shared assets, one per core at a time (docs/robustness.md)"
+stage "fuzzers (libFuzzer, ASan + UBSan): each target 12 s on corpora from the shared assets, one per core at a time (docs/robustness.md)"
 need_packages "${FUZZ_PACKAGES[@]}"
 # clang warns where GCC does not (INFINITY, a float, promoted in the kernel):
 # the fuzz build does not add -Werror; the GCC builds keep it.
@@ -97,7 +97,7 @@ CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWit
   -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/dev/null
 cmake --build build/fuzz -j "$jobs" --target proxima_fuzz_obj proxima_fuzz_poses proxima_fuzz_gltf \
   proxima_fuzz_gltf_capi proxima_fuzz_create_mesh proxima_fuzz_capi proxima_fuzz_hid_descriptor
-tests/fuzz/run.sh build/fuzz "$(assets_dir)" "${PROX_FUZZ_SECONDS:-20}"
+tests/fuzz/run.sh build/fuzz "$(assets_dir)" "${PROX_FUZZ_SECONDS:-12}"
 
 stage "release"
 # FCL, the scene benchmark's peer (never a dependency of the SDK): the smoke

@@ -75,13 +75,15 @@ class HidCliTest(unittest.TestCase):
     def tearDown(self):
         self.dir.cleanup()
 
-    def emulate(self, devices, sends, *command):
+    def emulate(self, devices, sends, *command, after_output=()):
         record = os.path.join(self.dir.name, "record.json")
         args = [EMULATE]
         for d in devices:
             args += ["--device", d]
         for device, seconds, report in sends:
             args += ["--send", str(device), str(seconds), report]
+        for device, report in after_output:
+            args += ["--send-after-output", str(device), report]
         r = subprocess.run(args + ["--record", record, "--", PROXIMA, *command], capture_output=True, text=True,
                            timeout=240)
         with open(record) as f:
@@ -122,19 +124,19 @@ class HidCliTest(unittest.TestCase):
 
     def test_run_drives_the_tool_and_feels_the_contact(self):
         # Path T's start is 5 cm from A; full deflection is 0.1 m/s towards
-        # it: about 0.56 s reaches contact, where the tool is held. (It backed
-        # out again from 1.2 s on; in a CI run beside busy tests the device
-        # thread's integration of the approach came out short of the way
-        # back's, so the test ends in contact: what it checks is that the
-        # tool went towards A and the contact was felt.)
+        # it: about 0.5 s reaches contact. The stick is let go once the
+        # device is written its first output (the contact felt), not after a
+        # fixed time, which a busy machine's device thread integrates short
+        # of contact; then the tool is held there.
         for name in DEVICES:
             with self.subTest(name):
                 ids = DEVICES[name][0]
                 out = os.path.join(self.dir.name, name + ".json")
-                sends = [(0, 0, left(name)), (0, 0.56, rest(name))]
-                r, record = self.emulate([name], sends, "run", "--device", "hid:" + ids, "--seconds", "1.5",
-                                         "--hold", "0.5", "--json", out)
+                r, record = self.emulate([name], [(0, 0, left(name))], "run", "--device", "hid:" + ids,
+                                         "--seconds", "2", "--hold", "0.5", "--json", out,
+                                         after_output=[(0, rest(name))])
                 self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+                self.assertNotIn("before every report was sent", r.stderr, "no output: the contact never came")
                 self.assertIn("device: HID " + DEVICES[name][1], r.stdout)
                 with open(out) as f:
                     report = json.load(f)

@@ -1,7 +1,8 @@
 // proxima_hid_emulate: runs a command with emulated HID devices plugged in,
 // for the command-line tests (tests/cli/hid_cli_test.py):
 //
-//   proxima_hid_emulate [--device NAME]... [--send DEVICE SECONDS HEX]... [--record FILE] -- COMMAND...
+//   proxima_hid_emulate [--device NAME]... [--send DEVICE SECONDS HEX]...
+//                       [--send-after-output DEVICE HEX]... [--record FILE] -- COMMAND...
 //
 // NAME is one of the shared devices (spacenavigator, spacemouse_wireless,
 // ds4v2, dualsense; the force-feedback openffboard, openffboard_1axis and
@@ -9,7 +10,10 @@
 // as /dev/hidraw0, 1, ... in order. Each
 // --send queues an input report (hex bytes, report id first) on device
 // DEVICE: the first one at once, each later one SECONDS after the device's
-// first report was read (that is, after the command opened it). --record
+// first report was read (that is, after the command opened it). Each
+// --send-after-output queues one once the command has written the device
+// its first output report (for a rumble or LED device: the first contact
+// felt), closing a test's loop on what the command did, not on time. --record
 // writes, as JSON, what each device was written and which feature reports
 // were asked for. Exits with the command's status.
 #include "hid/emulated_hid.h"
@@ -37,6 +41,7 @@ struct Send {
   int device = 0;
   double seconds = 0.0;
   Bytes report;
+  bool after_output = false;  // sent once the device was written an output report, not by time
 };
 
 Bytes from_hex(const std::string& h) {
@@ -56,7 +61,8 @@ std::string to_hex(const Bytes& b) {
 [[noreturn]] void usage(const char* why) {
   std::fprintf(stderr,
                "proxima_hid_emulate: %s\nusage: proxima_hid_emulate [--device NAME]... "
-               "[--send DEVICE SECONDS HEX]... [--record FILE] -- COMMAND...\n",
+               "[--send DEVICE SECONDS HEX]... [--send-after-output DEVICE HEX]... [--record FILE] -- "
+               "COMMAND...\n",
                why);
   std::exit(2);
 }
@@ -78,6 +84,12 @@ int main(int argc, char** argv) {
       s.device = std::atoi(argv[++i]);
       s.seconds = std::atof(argv[++i]);
       s.report = from_hex(argv[++i]);
+      sends.push_back(s);
+    } else if (a == "--send-after-output" && i + 2 < argc) {
+      Send s;
+      s.device = std::atoi(argv[++i]);
+      s.report = from_hex(argv[++i]);
+      s.after_output = true;
       sends.push_back(s);
     } else if (a == "--record" && i + 1 < argc) {
       record = argv[++i];
@@ -119,7 +131,7 @@ int main(int argc, char** argv) {
   // The first report of each device at once; it is read when the command opens it.
   std::vector<bool> first_sent(names.size(), false);
   for (const Send& s : sends)
-    if (!first_sent[std::size_t(s.device)])
+    if (!s.after_output && !first_sent[std::size_t(s.device)])
       bus.send(s.device, s.report), first_sent[std::size_t(s.device)] = true;
 
   const pid_t child = fork();
@@ -134,7 +146,8 @@ int main(int argc, char** argv) {
     std::vector<bool> done(sends.size(), false);
     std::vector<bool> first(names.size(), false);
     for (std::size_t k = 0; k < sends.size(); ++k)
-      if (!first[std::size_t(sends[k].device)]) done[k] = true, first[std::size_t(sends[k].device)] = true;
+      if (!sends[k].after_output && !first[std::size_t(sends[k].device)])
+        done[k] = true, first[std::size_t(sends[k].device)] = true;
     const auto now = [] {
       return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
     };
@@ -144,6 +157,10 @@ int main(int argc, char** argv) {
         if (done[k]) continue;
         left = true;
         const std::size_t d = std::size_t(sends[k].device);
+        if (sends[k].after_output) {
+          if (!bus.writes(int(d)).empty()) bus.send(int(d), sends[k].report), done[k] = true;
+          continue;
+        }
         if (opened[d] < 0.0 && bus.pending(int(d)) == 0) opened[d] = now();
         if (opened[d] >= 0.0 && now() >= opened[d] + sends[k].seconds)
           bus.send(int(d), sends[k].report), done[k] = true;
