@@ -87,9 +87,13 @@ ctest --test-dir "$out/build" --output-on-failure -j "$jobs" -R "^(${names%|})$"
   tee "$out/ctest.log"
 grep -q "100% tests passed, 0 tests failed out of ${#tests[@]}\$" "$out/ctest.log" ||
   fail "not every one of the ${#tests[@]} Windows tests ran and passed"
-# The haptic loop's own word on its timing under Wine (sleep_timer_capi_test).
+# The haptic loop's own word on its timing under Wine (sleep_timer_capi_test),
+# for the log only: the suites above are the check. Wine's server exits a
+# few seconds after its last client, and a client starting at that moment
+# once lost its connection here ("wine client error: recvmsg: Connection
+# reset by peer") after every suite had passed.
 "$wine" "$out/build/bin/proxima_capi_threads_tests.exe" --gtest_filter='SleepTimer.*' | grep -E "haptic loop|priority" |
-  sed 's/^/   /'
+  sed 's/^/   /' || echo "   (no word from the haptic loop under Wine this time)"
 
 step "the Windows zip (CPack), and hello built against it and run under Wine"
 rm -f "$out"/build/proxima-*-win64.zip
