@@ -111,6 +111,16 @@ def check(result):
     raise error_for(result)(message, result)
 
 
+def optional_function(name, lacking):
+    """A function of an optional part of the library (proxima_hid.h,
+    proxima_openxr.h), or Unsupported saying what the library lacks when it
+    was built without that part (cffi looks each function up on first use)."""
+    try:
+        return getattr(lib, name)
+    except AttributeError:
+        raise Unsupported(f"{name}: this libproxima has {lacking}") from None
+
+
 def invalid(message):
     return InvalidArgument(message, _RESULTS[InvalidArgument])
 

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from ._core import Unsupported, check, enum_name, ffi, from_c, lib, pose_from_c, pose_to_c, real
+from ._core import check, enum_name, ffi, from_c, lib, optional_function, pose_from_c, pose_to_c, real
 from ._types import HidDeviceInfo, HidDeviceStats, ScriptedDeviceRecord, StreamDeviceStats
 
 
@@ -108,13 +108,9 @@ class StreamDevice:
 
 def hid_function(name):
     """A function of proxima_hid.h, or Unsupported when the library was built
-    without it (cffi looks each function up on first use)."""
-    try:
-        return getattr(lib, name)
-    except AttributeError:
-        raise Unsupported(f"{name}: this libproxima has no HID devices: it was built without "
-                          "PROX_WITH_HIDAPI (it needs hidapi's hidraw backend, Debian's libhidapi-dev, "
-                          "when the package is built)") from None
+    without it."""
+    return optional_function(name, "no HID devices: it was built without PROX_WITH_HIDAPI (it needs hidapi's "
+                                   "hidraw backend, Debian's libhidapi-dev, when the package is built)")
 
 
 def _string(chars):

@@ -11,20 +11,16 @@ import ctypes
 
 import numpy as np
 
-from ._core import Unsupported, check, enum_choices, ffi, from_c, integer, invalid, lib, pose_to_c
+from ._core import check, enum_choices, ffi, from_c, integer, invalid, lib, optional_function, pose_to_c
 
 _PFN = "PFN_xrGetInstanceProcAddr"
 
 
 def xr_function(name):
     """A function of proxima_openxr.h, or Unsupported when the library was
-    built without it (cffi looks each function up on first use)."""
-    try:
-        return getattr(lib, name)
-    except AttributeError:
-        raise Unsupported(f"{name}: this libproxima has no OpenXR device: it was built without "
-                          "PROX_WITH_OPENXR (it needs the OpenXR headers, Debian's libopenxr-dev, "
-                          "when the package is built)") from None
+    built without it."""
+    return optional_function(name, "no OpenXR device: it was built without PROX_WITH_OPENXR (it needs the "
+                                   "OpenXR headers, Debian's libopenxr-dev, when the package is built)")
 
 
 def _address(value):
