@@ -85,7 +85,9 @@ configure build/tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo "${sanitizer_flags[@]}" -
 cmake --build build/tsan -j "$jobs" --target proxima_runtime_tests proxima_threads_tests proxima_capi_threads_tests \
   proxima_capi_stream_tests proxima_capi_timing_tests \
   proxima_hid_capi_tests proxima_hid_pid_device_tests proxima_openxr_tests proxima_coupling_threads_tests proxima_parallel_tests
-ctest --test-dir build/tsan --output-on-failure -L threads
+# Two at a time, as the other suites: these tests close their loops on what
+# they measure (counts, gaps), never on a quiet machine.
+ctest --test-dir build/tsan --output-on-failure -L threads -j "$jobs"
 
 stage "fuzzers (libFuzzer, ASan + UBSan): each target 12 s on corpora from the shared assets, one per core at a time (docs/robustness.md)"
 need_packages "${FUZZ_PACKAGES[@]}"
