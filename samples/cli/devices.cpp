@@ -154,7 +154,7 @@ std::shared_ptr<HidRun> open_hid(const std::string& kind, proxWorldId world, con
   d.vendorId = vid, d.productId = pid;
   d.initialPose = start;
   d.referencePoint = reference;
-  check(proxWorld_OpenHidDevice(world, &d, &run->id));
+  check(proxWorld_CreateHidDevice(world, &d, &run->id));
   run->first = start;
   for (const proxHidDeviceInfo& i : enumerate())
     if (i.vendorId == (vid ? vid : i.vendorId) && i.productId == (pid ? pid : i.productId)) {

@@ -29,7 +29,7 @@ uint64_t attach_hid(proxWorldId world, proxBodyId tool, const proxPose& start, c
   def.initialPose = start;
   def.referencePoint = reference;
   proxHidDeviceId id;
-  check(proxWorld_OpenHidDevice(world, &def, &id));
+  check(proxWorld_CreateHidDevice(world, &def, &id));
   proxDeviceDef device;
   check(proxHidDevice_GetDeviceDef(id, &device));
   check(proxBody_SetDevice(tool, &device));

@@ -7,6 +7,7 @@
 #include "expect.h"
 
 #include <cmath>
+#include <string>
 
 TEST(CApiForcePresetAt, ScalesTheSafetyDistanceAndDecayWithTheCutoff) {
   for (const proxForcePreset preset : {PROX_FORCE_PRESET_HARD, PROX_FORCE_PRESET_SOFT}) {
@@ -44,4 +45,37 @@ TEST(CApiForcePresetAt, RefusesWhatIsNotACutoffOrAPreset) {
                "preset");
   EXPECT_FAILS(proxGetForcePresetAt(PROX_FORCE_PRESET_SOFT, 0.01, nullptr), PROX_ERROR_INVALID_ARGUMENT,
                "force is NULL");
+}
+
+// proxGetForcePreset(kind, cutoff): the same settings by value under the
+// preset's own name, beside the three-argument form of 0.3, which keeps
+// working (and is checked in C by the C11 header test).
+TEST(CApiForcePresetAt, GetForcePresetTakesAKindAndACutoff) {
+  for (const proxForcePreset kind : {PROX_FORCE_PRESET_HARD, PROX_FORCE_PRESET_SOFT}) {
+    SCOPED_TRACE(int(kind));
+    proxForceSettings at{};
+    ASSERT_OK(proxGetForcePresetAt(kind, 0.02, &at));
+    const proxForceSettings by_value = proxGetForcePreset(kind, 0.02);
+    EXPECT_EQ(by_value.curve, at.curve);
+    EXPECT_EQ(by_value.maxForce, at.maxForce);
+    EXPECT_EQ(by_value.maxTorque, at.maxTorque);
+    EXPECT_EQ(by_value.safetyDistance, at.safetyDistance);
+    EXPECT_EQ(by_value.decayLength, at.decayLength);
+    proxForceSettings out{};
+    ASSERT_OK(proxGetForcePreset(kind, 0.02, &out));
+    EXPECT_EQ(out.safetyDistance, at.safetyDistance);
+    // The 0.3 form: the preset at its own cutoff.
+    double cutoff = 0;
+    ASSERT_OK(proxGetForcePreset(kind, &out, &cutoff));
+    EXPECT_GT(cutoff, 0.0);
+    EXPECT_EQ(proxGetForcePreset(kind, cutoff).safetyDistance, out.safetyDistance);
+  }
+  // A failure: zeroed settings, which a world refuses, and the reason.
+  const proxForceSettings none = proxGetForcePreset(PROX_FORCE_PRESET_HARD, -1.0);
+  EXPECT_EQ(none.maxForce, 0.0);
+  EXPECT_NE(std::string(proxGetLastError()).find("cutoff"), std::string::npos);
+  proxWorldDef def = proxDefaultWorldDef();
+  def.force = none;
+  proxWorldId w{};
+  EXPECT_FAILS(proxCreateWorld(&def, &w), PROX_ERROR_INVALID_ARGUMENT, "maxForce");
 }

@@ -6,7 +6,7 @@
 
 _Static_assert(sizeof(proxHidDeviceInfo) == 464, "2 + 2 + 4 + 4 + 2 + 2 + 128 + 64 + 256");
 _Static_assert(sizeof(proxHidDeviceId) == 16, "proxHidDeviceId");
-_Static_assert(sizeof(proxHidDeviceDef) == 232, "8 + 4 (+4) + 56 + 24 + 4 * 8 + 32 + 3 * 8 + 2 * 8 + 2 * 4 + 2 * 8 + 8");
+_Static_assert(sizeof(proxHidDeviceDef) == 240, "4 (+4) + 8 + 4 (+4) + 56 + 24 + 4 * 8 + 32 + 3 * 8 + 2 * 8 + 2 * 4 + 2 * 8 + 8");
 _Static_assert(sizeof(proxHidDeviceStats) == 120, "4 + 4 + 8 * 8 + 8 + 2 * 8 + 2 * 8 + 4 + 4");
 _Static_assert(sizeof(proxHidForceEffect) == 4, "proxHidForceEffect");
 _Static_assert(sizeof(proxHidProfile) == 4, "proxHidProfile");

@@ -76,11 +76,11 @@ TEST_F(HidCapi, PadsHaveTheirCalibrationReadAtOpen) {
   const int puck = bus.add(device_spec("spacemouse_wireless"));
   proxHidDeviceId a, b, c;
   proxHidDeviceDef def = def_for(0x054c, 0x09cc);
-  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &a));
+  ASSERT_OK(proxWorld_CreateHidDevice(world, &def, &a));
   def = def_for(0x054c, 0x0ce6);
-  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &b));
+  ASSERT_OK(proxWorld_CreateHidDevice(world, &def, &b));
   def = def_for(0x256f, 0);
-  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &c));
+  ASSERT_OK(proxWorld_CreateHidDevice(world, &def, &c));
   EXPECT_EQ(bus.feature_requests(ds4), std::vector<std::uint8_t>{0x02});
   EXPECT_EQ(bus.feature_requests(ds), std::vector<std::uint8_t>{0x05});
   EXPECT_TRUE(bus.feature_requests(puck).empty());
@@ -93,28 +93,31 @@ TEST_F(HidCapi, PadsHaveTheirCalibrationReadAtOpen) {
 TEST_F(HidCapi, OpenRefusesWhatIsNotThere) {
   proxHidDeviceId d;
   proxHidDeviceDef def = def_for(0x054c, 0x09cc);
-  EXPECT_FAILS(proxWorld_OpenHidDevice(world, &def, &d), PROX_ERROR_FILE, "054c:09cc");
+  EXPECT_FAILS(proxWorld_CreateHidDevice(world, &def, &d), PROX_ERROR_FILE, "054c:09cc");
   bus.add(device_spec("ds4v2"));
   def.path = "/dev/hidraw99";
-  EXPECT_FAILS(proxWorld_OpenHidDevice(world, &def, &d), PROX_ERROR_FILE, "/dev/hidraw99");
+  EXPECT_FAILS(proxWorld_CreateHidDevice(world, &def, &d), PROX_ERROR_FILE, "/dev/hidraw99");
   def = def_for(0, 0);
   def.deadZone = 0.95;
-  EXPECT_FAILS(proxWorld_OpenHidDevice(world, &def, &d), PROX_ERROR_INVALID_ARGUMENT, "deadZone");
+  EXPECT_FAILS(proxWorld_CreateHidDevice(world, &def, &d), PROX_ERROR_INVALID_ARGUMENT, "deadZone");
   def = def_for(0, 0);
   def.outputRate = 1000;
-  EXPECT_FAILS(proxWorld_OpenHidDevice(world, &def, &d), PROX_ERROR_INVALID_ARGUMENT, "outputRate");
+  EXPECT_FAILS(proxWorld_CreateHidDevice(world, &def, &d), PROX_ERROR_INVALID_ARGUMENT, "outputRate");
   def = def_for(0, 0);
   def.linearSpeed = std::nan("");
-  EXPECT_FAILS(proxWorld_OpenHidDevice(world, &def, &d), PROX_ERROR_INVALID_ARGUMENT, "linearSpeed");
+  EXPECT_FAILS(proxWorld_CreateHidDevice(world, &def, &d), PROX_ERROR_INVALID_ARGUMENT, "linearSpeed");
   def = def_for(0, 0);
   def.deviceToWorld = {0, 0, 0, 0};
-  EXPECT_FAILS(proxWorld_OpenHidDevice(world, &def, &d), PROX_ERROR_INVALID_ARGUMENT, "deviceToWorld");
+  EXPECT_FAILS(proxWorld_CreateHidDevice(world, &def, &d), PROX_ERROR_INVALID_ARGUMENT, "deviceToWorld");
   proxHidDeviceDef raw{};
-  EXPECT_FAILS(proxWorld_OpenHidDevice(world, &raw, &d), PROX_ERROR_INVALID_ARGUMENT,
+  EXPECT_FAILS(proxWorld_CreateHidDevice(world, &raw, &d), PROX_ERROR_INVALID_ARGUMENT,
                "proxDefaultHidDeviceDef");
   def = def_for(0, 0);
-  EXPECT_FAILS(proxWorld_OpenHidDevice(proxWorldId{}, &def, &d), PROX_ERROR_INVALID_HANDLE, "world");
-  EXPECT_FAILS(proxWorld_OpenHidDevice(world, nullptr, &d), PROX_ERROR_INVALID_ARGUMENT, "def");
+  def.apiVersion = PROX_API_VERSION + 1;  // made by a newer minor version's header
+  EXPECT_FAILS(proxWorld_CreateHidDevice(world, &def, &d), PROX_ERROR_VERSION_MISMATCH, "proxDefaultHidDeviceDef");
+  def = def_for(0, 0);
+  EXPECT_FAILS(proxWorld_CreateHidDevice(proxWorldId{}, &def, &d), PROX_ERROR_INVALID_HANDLE, "world");
+  EXPECT_FAILS(proxWorld_CreateHidDevice(world, nullptr, &d), PROX_ERROR_INVALID_ARGUMENT, "def");
   // Bad ids everywhere.
   proxHidDeviceStats s;
   proxDeviceDef dd;
@@ -123,13 +126,18 @@ TEST_F(HidCapi, OpenRefusesWhatIsNotThere) {
                "HID");
   EXPECT_FAILS(proxHidDevice_Close(proxHidDeviceId{1, 0, world}), PROX_ERROR_INVALID_HANDLE, "HID");
   // From another thread.
-  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &d));
+  ASSERT_OK(proxWorld_CreateHidDevice(world, &def, &d));
   proxResult other = PROX_SUCCESS;
   std::thread([&] { other = proxHidDevice_GetStats(d, &s); }).join();
   EXPECT_EQ(other, PROX_ERROR_WRONG_THREAD);
   EXPECT_OK(proxHidDevice_Close(d));
   EXPECT_FAILS(proxHidDevice_GetStats(d, &s), PROX_ERROR_INVALID_HANDLE, "closed");
   EXPECT_FAILS(proxHidDevice_Close(d), PROX_ERROR_INVALID_HANDLE, "closed");
+  // proxWorld_OpenHidDevice, the deprecated name, opens the same way.
+  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &d));
+  EXPECT_TRUE(proxHidDevice_IsValid(d));
+  EXPECT_OK(proxHidDevice_Destroy(d));
+  EXPECT_FAILS(proxWorld_OpenHidDevice(world, &raw, &d), PROX_ERROR_INVALID_ARGUMENT, "proxDefaultHidDeviceDef");
 }
 
 // Each profile's axes move the tool the documented way: a full deflection
@@ -159,7 +167,7 @@ TEST_F(HidCapi, EachProfileMovesTheToolAlongItsMappedAxis) {
     def.vendorId = spec.vendor_id, def.productId = spec.product_id;
     def.linearSpeed = 0.2;
     proxHidDeviceId d;
-    ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &d));
+    ASSERT_OK(proxWorld_CreateHidDevice(world, &def, &d));
     const proxPose p0 = pose_of(d);
     const double t0 = proxGetTime();
     bus.send(dev, c.push);
@@ -190,7 +198,7 @@ TEST_F(HidCapi, RotationTurnsAboutTheReferencePoint) {
   proxHidDeviceDef def = def_for(0x256f, 0xc62e);
   def.angularSpeed = 2.0;
   proxHidDeviceId d;
-  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &d));
+  ASSERT_OK(proxWorld_CreateHidDevice(world, &def, &d));
   bus.send(dev, puck_combined(0, 0, 0, 0, 0, -350));  // about the puck's z (down), backwards: about world +y
   sleep_seconds(0.15);
   bus.send(dev, puck_combined(0, 0, 0, 0, 0, 0));
@@ -215,7 +223,7 @@ TEST_F(HidCapi, DeadZoneHoldsStillAndRecentreReturnsToTheStart) {
   proxHidDeviceDef def = def_for(0x054c, 0x09cc);
   def.deadZone = 0.2;
   proxHidDeviceId d;
-  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &d));
+  ASSERT_OK(proxWorld_CreateHidDevice(world, &def, &d));
   // Within the dead zone: (150 - 128) / 127 = 0.17 on every axis.
   bus.send(dev, ds4_report(150, 150, 150, 150, 40, 0));
   sleep_seconds(0.1);

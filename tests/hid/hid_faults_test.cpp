@@ -66,7 +66,7 @@ class HidThreads : public HidScene {
     def.linearSpeed = speed;
     def.outputRate = output_rate;
     proxHidDeviceId d{};
-    EXPECT_OK(proxWorld_OpenHidDevice(world, &def, &d));
+    EXPECT_OK(proxWorld_CreateHidDevice(world, &def, &d));
     EXPECT_OK(proxHidDevice_GetDeviceDef(d, &recorder.inner));
     const proxDeviceDef rd = recorder.def();
     EXPECT_OK(proxBody_SetDevice(tool, &rd));
@@ -83,7 +83,7 @@ class HidThreads : public HidScene {
     def.linearSpeed = speed;
     def.outputRate = output_rate;
     proxHidDeviceId d{};
-    EXPECT_OK(proxWorld_OpenHidDevice(world, &def, &d));
+    EXPECT_OK(proxWorld_CreateHidDevice(world, &def, &d));
     proxDeviceDef dd{};
     EXPECT_OK(proxHidDevice_GetDeviceDef(d, &dd));
     EXPECT_OK(proxBody_SetDevice(tool, &dd));
@@ -461,7 +461,7 @@ TEST_F(HidThreads, TwoDevicesAtOnce) {
   proxHidDeviceDef def = def_for(0x046d, 0xc626);
   def.linearSpeed = 0.1;
   proxHidDeviceId other;
-  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &other));
+  ASSERT_OK(proxWorld_CreateHidDevice(world, &def, &other));
   start();
   bus.send(pad, ds4_report(128, 128, 128, 128, 0, 255));  // R2: up
   bus.send(puck, puck_split(1, 0, 350, 0));               // towards the user: +z
@@ -504,7 +504,7 @@ TEST_F(HidThreads, ClosedWhileTheThreadsRun) {
 TEST_F(HidThreads, AnotherWorldsDeviceIsRefusedAndDestroyingTheWorldClosesIt) {
   bus.add(device_spec("ds4v2"));
   proxHidDeviceDef def = def_for(0, 0);
-  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &device));
+  ASSERT_OK(proxWorld_CreateHidDevice(world, &def, &device));
   proxDeviceDef dd;
   ASSERT_OK(proxHidDevice_GetDeviceDef(device, &dd));
   proxWorldDef wd = proxDefaultWorldDef();

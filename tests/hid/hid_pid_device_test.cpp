@@ -62,7 +62,7 @@ class PidDevices : public HidScene, public ::testing::WithParamInterface<Firmwar
     dev = bus.add(spec);
     proxHidDeviceDef def = def_for(f.vid, f.pid);
     def.maxForce = 4.0;
-    ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &device));
+    ASSERT_OK(proxWorld_CreateHidDevice(world, &def, &device));
   }
   void hold_the_tool() {
     ASSERT_OK(proxHidDevice_GetDeviceDef(device, &inner));
@@ -270,10 +270,10 @@ TEST_P(PidDevices, ItsDeclaredLimitsComeWithItsDeviceDef) {
   dev = bus.add(spec);
   proxHidDeviceDef def = def_for(f.vid, f.pid);
   def.maxStiffness = -5.0;
-  EXPECT_FAILS(proxWorld_OpenHidDevice(world, &def, &device), PROX_ERROR_INVALID_ARGUMENT, "maxStiffness");
+  EXPECT_FAILS(proxWorld_CreateHidDevice(world, &def, &device), PROX_ERROR_INVALID_ARGUMENT, "maxStiffness");
   def.maxStiffness = 300.0;
   def.damping = 1.5;
-  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &device));
+  ASSERT_OK(proxWorld_CreateHidDevice(world, &def, &device));
   proxDeviceDef d{};
   ASSERT_OK(proxHidDevice_GetDeviceDef(device, &d));
   EXPECT_EQ(d.maxStiffness, 300.0);
@@ -297,7 +297,7 @@ TEST(PidWheel, TurnsTheToolAboutItsAxle) {
   def.referencePoint = {0.0, 0.1, 0.0};  // the tool turns about a point 10 cm above its origin
   def.workspace = 0.8;                   // rad at full lock
   proxHidDeviceId device{};
-  ASSERT_OK(proxWorld_OpenHidDevice(world, &def, &device));
+  ASSERT_OK(proxWorld_CreateHidDevice(world, &def, &device));
   proxHidDeviceStats s{};
   ASSERT_TRUE(wait_until([&] {
     EXPECT_OK(proxHidDevice_GetStats(device, &s));

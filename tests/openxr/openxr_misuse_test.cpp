@@ -47,6 +47,9 @@ TEST(XrDeviceMisuse, BadDefsAreRefused) {
   d = {};
   EXPECT_REFUSED(proxWorld_CreateXrDevice(scene.world, &d, &device), PROX_ERROR_INVALID_ARGUMENT,
                  "proxDefaultXrDeviceDef");
+  d = good, d.apiVersion = PROX_API_VERSION + 1;  // made by a newer minor version's header
+  EXPECT_REFUSED(proxWorld_CreateXrDevice(scene.world, &d, &device), PROX_ERROR_VERSION_MISMATCH,
+                 "proxDefaultXrDeviceDef");
   d = good, d.getInstanceProcAddr = nullptr;
   EXPECT_REFUSED(proxWorld_CreateXrDevice(scene.world, &d, &device), PROX_ERROR_INVALID_ARGUMENT,
                  "getInstanceProcAddr");

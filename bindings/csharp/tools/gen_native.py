@@ -91,7 +91,7 @@ SCALARS = {
 }
 KEYWORDS = {"object", "string", "params", "out", "ref", "base", "lock", "event", "operator", "fixed", "checked",
             "decimal", "internal", "namespace", "override", "readonly", "sizeof", "typeof", "value"}
-HIDDEN = {"reserved", "internalValue"}
+HIDDEN = {"reserved", "internalValue", "apiVersion"}
 
 
 def cs_type(ctype):

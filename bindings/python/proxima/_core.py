@@ -207,7 +207,8 @@ def struct_array(cdata, name):
 
 # ---- dataclasses of the C structs ----------------------------------------------
 
-_SKIPPED = ("reserved", "internalValue", "apiVersion")
+# The fields a def carries for the library, never a setting.
+HIDDEN_FIELDS = ("reserved", "internalValue", "apiVersion")
 
 
 def snake(name):
@@ -241,7 +242,7 @@ def make_dataclass(struct_name, class_name, doc, defaults=None):
     ctype = ffi.typeof(struct_name)
     fields, kinds = [], {}
     for name, field in ctype.fields:
-        if name in _SKIPPED:
+        if name in HIDDEN_FIELDS:
             continue
         kind = _field_kind(struct_name, name, field.type)
         kinds[snake(name)] = (name, kind, field.type)

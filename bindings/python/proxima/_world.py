@@ -10,7 +10,7 @@ import numpy as np
 
 from . import _header
 from ._core import (check, enum_value, ffi, fill_c, from_c, integer, invalid, lib, numbers, pose_to_c, poses_array,
-                    real, snake, vec3)
+                    real, snake, vec3, HIDDEN_FIELDS)
 from ._bodies import Body, Mesh, _key, distance
 from ._types import (ForceSettings, PatchSettings, PatchStats, SafetyStats, SearchStats, ThreadStats, TrackStats,
                      WorldStats)
@@ -390,7 +390,7 @@ class World:
             path = ffi.new("char[]", _path(device, "open_hid_device: device"))
             d.path = path
         idp = ffi.new("proxHidDeviceId*")
-        check(hid_function("proxWorld_OpenHidDevice")(self._idp[0], d, idp))
+        check(hid_function("proxWorld_CreateHidDevice")(self._idp[0], d, idp))
         return HidDevice(self, idp)
 
     def create_xr_device(self, *, get_instance_proc_addr, instance, session, base_space, pose_action,
@@ -433,7 +433,7 @@ def _fill_settings(d, struct_name, settings, what, skip=()):
     enums by their short names ("spin"), proxBool fields from bools."""
     bools = _header.BOOL_FIELDS.get(struct_name, ())
     fields = {snake(name): (name, field.type) for name, field in ffi.typeof(struct_name).fields
-              if name not in ("internalValue", "reserved") and snake(name) not in skip}
+              if name not in HIDDEN_FIELDS and snake(name) not in skip}
     for key, value in settings.items():
         if key not in fields:
             raise invalid(f"{what}: unknown setting {key!r}; the settings are {', '.join(fields)}")

@@ -415,13 +415,14 @@ def test_every_c_function_is_bound():
     assert len(functions) > 40
     # Python device callbacks are refused (docs/python.md), so their def is not needed;
     # Body.contacts() takes the contacts with their patches (proxBody_GetContactPatches);
-    # proxHidDevice_Close and proxDestroyWorld are deprecated old names. The calls of
+    # proxHidDevice_Close, proxWorld_OpenHidDevice and proxDestroyWorld are deprecated old names. The calls of
     # proxima_hid.h and proxima_openxr.h go through hid_function and
     # xr_function, which name what a library built without them lacks.
-    unbound = {"proxDefaultDeviceDef", "proxBody_GetContacts", "proxHidDevice_Close", "proxDestroyWorld"}
+    unbound = {"proxDefaultDeviceDef", "proxBody_GetContacts", "proxHidDevice_Close", "proxWorld_OpenHidDevice",
+               "proxDestroyWorld"}
     missing = [f for f in functions
                if f not in unbound and not re.search(rf'\blib\.{f}\b|(hid|xr)_function\("{f}"\)', source)]
-    assert "proxWorld_OpenHidDevice" in functions and "proxWorld_CreateXrDevice" in functions
+    assert "proxWorld_CreateHidDevice" in functions and "proxWorld_CreateXrDevice" in functions
     assert missing == []
 
 

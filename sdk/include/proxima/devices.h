@@ -18,6 +18,7 @@ extern "C" {
  * thread at its rate while the world's threads run. They must return
  * quickly and must not call Proxima. */
 typedef struct proxDeviceDef {
+  int32_t apiVersion; /* PROX_API_VERSION, set by proxDefaultDeviceDef() */
   /* Writes the tool's world pose and returns nonzero, or returns 0 when the
    * device has no pose this tick (the force then fades out). A non-finite
    * pose or a quaternion far from unit length counts as none. Required. */
@@ -68,6 +69,7 @@ typedef struct proxScriptedDeviceId {
 } proxScriptedDeviceId;
 
 typedef struct proxScriptedDeviceDef {
+  int32_t apiVersion; /* PROX_API_VERSION, set by proxDefaultScriptedDeviceDef() */
   const proxPose* poses; /* the path; copied */
   int32_t poseCount;     /* >= 1 */
   proxBool loop;         /* start over after the last pose, or hold it */
@@ -132,6 +134,7 @@ typedef enum proxStreamMode {
 } proxStreamMode;
 
 typedef struct proxStreamDeviceDef {
+  int32_t apiVersion; /* PROX_API_VERSION, set by proxDefaultStreamDeviceDef() */
   proxStreamMode mode; /* default PROX_STREAM_INTERPOLATE */
   double delay;        /* s, >= 0: INTERPOLATE's latency (default 1/90: one 90 Hz frame) */
   double

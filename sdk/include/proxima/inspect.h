@@ -115,4 +115,39 @@ PROX_API proxResult proxBody_GetDistance(proxBodyId a, proxBodyId b, double maxD
 }
 #endif
 
+/* proxGetForcePreset(kind, cutoff): the preset at that cutoff, by value, as
+ * proxGetForcePresetAt makes it; a zeroed proxForceSettings (which every def
+ * refuses) when it fails, proxGetLastError saying why. And
+ * proxGetForcePreset(kind, cutoff, &force), proxGetForcePresetAt by the same
+ * name. In C++ two overloads; in C11 a macro choosing by the arguments, so
+ * the three-argument form of 0.3, (preset, &force, &cutoff), still calls the
+ * exported function (as (proxGetForcePreset)(...) always does). The
+ * bindings' generators define PROX_NO_OVERLOADS. */
+#ifndef PROX_NO_OVERLOADS
+#ifdef __cplusplus
+inline proxResult proxGetForcePreset(proxForcePreset kind, double cutoff, proxForceSettings* force) {
+  return proxGetForcePresetAt(kind, cutoff, force);
+}
+inline proxForceSettings proxGetForcePreset(proxForcePreset kind, double cutoff) {
+  proxForceSettings force = {};
+  if (proxGetForcePresetAt(kind, cutoff, &force) != PROX_SUCCESS) force = proxForceSettings{};
+  return force;
+}
+#elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 201112L
+static inline proxForceSettings proxGetForcePresetAtCutoff_(proxForcePreset kind, double cutoff) {
+  proxForceSettings force = {0};
+  if (proxGetForcePresetAt(kind, cutoff, &force) != PROX_SUCCESS) {
+    proxForceSettings none = {0};
+    force = none;
+  }
+  return force;
+}
+#define PROX_PICK_THIRD_(a, b, c, name, ...) name
+#define PROX_FORCE_PRESET3_(kind, second, third) \
+  _Generic((second), proxForceSettings*: (proxGetForcePreset), default: proxGetForcePresetAt)(kind, second, third)
+#define proxGetForcePreset(...) \
+  PROX_PICK_THIRD_(__VA_ARGS__, PROX_FORCE_PRESET3_, proxGetForcePresetAtCutoff_, ~)(__VA_ARGS__)
+#endif
+#endif /* PROX_NO_OVERLOADS */
+
 #endif /* PROXIMA_INSPECT_H */

@@ -58,6 +58,7 @@ typedef struct proxHidDeviceId {
 } proxHidDeviceId;
 
 typedef struct proxHidDeviceDef {
+  int32_t apiVersion; /* PROX_API_VERSION, set by proxDefaultHidDeviceDef() */
   const char* path; /* a proxHidDeviceInfo.path, or NULL: the first supported device matching ... */
   uint16_t vendorId, productId; /* ... these ids (0: any) */
   proxPose initialPose;         /* the tool's pose at open, and where the re-centre button puts it */
@@ -132,6 +133,9 @@ typedef struct proxHidDeviceStats {
  * PROX_ERROR_FILE when no supported device matches or it cannot be opened.
  * The device lives until proxHidDevice_Destroy or its world's destruction
  * (devices.h says how every device is let go of). Game thread. */
+PROX_API proxResult proxWorld_CreateHidDevice(proxWorldId world, const proxHidDeviceDef* def,
+                                              proxHidDeviceId* device);
+/* Deprecated: proxWorld_CreateHidDevice under its old name (kept until at least 0.5). */
 PROX_API proxResult proxWorld_OpenHidDevice(proxWorldId world, const proxHidDeviceDef* def,
                                             proxHidDeviceId* device);
 /* The def that attaches it with proxBody_SetDevice. Game thread. */

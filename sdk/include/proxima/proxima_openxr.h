@@ -58,6 +58,7 @@ typedef enum proxXrTimeSource {
 } proxXrTimeSource;
 
 typedef struct proxXrDeviceDef {
+  int32_t apiVersion; /* PROX_API_VERSION, set by proxDefaultXrDeviceDef() */
   PFN_xrGetInstanceProcAddr getInstanceProcAddr; /* the app's: every call goes through it */
   XrInstance instance;
   XrSession session;

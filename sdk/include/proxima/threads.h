@@ -32,6 +32,7 @@ typedef enum proxSleepTimer {
 } proxSleepTimer;
 
 typedef struct proxThreadsDef {
+  int32_t apiVersion; /* PROX_API_VERSION, set by proxDefaultThreadsDef() */
   double hapticRate; /* Hz, in [1, 100000]: the haptic loop (default 1000) */
   double localRate;  /* Hz, 0 or >= 1: local tracking (default 1000; 0: back to back) */
   double globalRate; /* Hz, 0 or >= 1: global search (default 0: back to back, idle while nothing moves) */

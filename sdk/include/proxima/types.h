@@ -74,7 +74,7 @@ typedef struct proxForceSettings {
 } proxForceSettings;
 
 typedef struct proxWorldDef {
-  int32_t apiVersion; /* set by proxDefaultWorldDef to PROX_API_VERSION */
+  int32_t apiVersion; /* PROX_API_VERSION, set by proxDefaultWorldDef() */
   proxMethod method;
   double cutoff;           /* m: contacts farther apart are not wanted (> 0) */
   proxForceSettings force; /* the default: the "hard" settings of docs/cli.md */
@@ -93,6 +93,7 @@ PROX_API proxWorldDef proxDefaultWorldDef(void);
 /* ---- meshes ---------------------------------------------------------------- */
 
 typedef struct proxMeshDef {
+  int32_t apiVersion; /* PROX_API_VERSION, set by proxDefaultMeshDef() */
   const double* positions; /* x, y, z per vertex */
   uint32_t vertexCount;
   const uint32_t* indices; /* three per triangle, counter-clockwise seen from outside */
@@ -156,6 +157,7 @@ typedef enum proxToolMode {
 } proxToolMode;
 
 typedef struct proxBodyDef {
+  int32_t apiVersion; /* PROX_API_VERSION, set by proxDefaultBodyDef() */
   proxMeshId mesh;
   proxBodyType type;
   proxPose pose;

@@ -13,7 +13,7 @@ static_assert(sizeof(proxPose) == 56, "ABI");
 static_assert(sizeof(proxForceSettings) == 40, "ABI");
 static_assert(sizeof(proxWorldDef) == 64, "ABI");
 static_assert(offsetof(proxWorldDef, workerCount) == 60, "ABI");
-static_assert(sizeof(proxMeshDef) == 32, "ABI");
+static_assert(sizeof(proxMeshDef) == 40, "ABI");
 static_assert(sizeof(proxBodyDef) == 152, "ABI");
 static_assert(sizeof(proxContact) == 112, "ABI");
 static_assert(sizeof(proxWrench) == 56, "ABI");
@@ -23,12 +23,12 @@ static_assert(sizeof(proxMeshInfo) == 68 + 4, "ABI");
 static_assert(sizeof(proxRigInfo) == 16, "ABI");
 static_assert(sizeof(proxSkinInfo) == 72, "ABI");
 static_assert(sizeof(proxAnimationInfo) == 88, "ABI");
-static_assert(sizeof(proxDeviceDef) == 48, "ABI");
+static_assert(sizeof(proxDeviceDef) == 56, "ABI");
 static_assert(sizeof(proxScriptedDeviceId) == 16, "ABI");
-static_assert(sizeof(proxScriptedDeviceDef) == 32, "ABI");
+static_assert(sizeof(proxScriptedDeviceDef) == 40, "ABI");
 static_assert(sizeof(proxScriptedDeviceRecord) == 104, "ABI");
-static_assert(sizeof(proxThreadsDef) == 112, "ABI");
-static_assert(offsetof(proxThreadsDef, globalWorkerCount) == 104, "ABI");
+static_assert(sizeof(proxThreadsDef) == 120, "ABI");
+static_assert(offsetof(proxThreadsDef, globalWorkerCount) == 112, "ABI");
 static_assert(sizeof(proxHapticSample) == 192, "ABI");
 static_assert(sizeof(proxThreadStats) == 120, "ABI");
 static_assert(sizeof(proxSafetyStats) == 48, "ABI");
@@ -56,12 +56,12 @@ static_assert(sizeof(proxVersion) == 12, "ABI");
 #if PROX_WITH_HIDAPI
 #include <proxima/proxima_hid.h>
 static_assert(sizeof(proxHidDeviceInfo) == 464 && sizeof(proxHidDeviceId) == 16, "ABI");
-static_assert(sizeof(proxHidDeviceDef) == 232 && sizeof(proxHidDeviceStats) == 120, "ABI");
+static_assert(sizeof(proxHidDeviceDef) == 240 && sizeof(proxHidDeviceStats) == 120, "ABI");
 static_assert(sizeof(proxHidProfile) == 4 && sizeof(proxHidForceEffect) == 4, "ABI");
 #endif
 #if PROX_WITH_OPENXR
 #include <proxima/proxima_openxr.h>
-static_assert(sizeof(proxXrDeviceId) == 8 && sizeof(proxXrDeviceDef) == 240 && sizeof(proxXrDeviceStats) == 88,
+static_assert(sizeof(proxXrDeviceId) == 8 && sizeof(proxXrDeviceDef) == 248 && sizeof(proxXrDeviceStats) == 88,
               "ABI");
 static_assert(sizeof(proxXrPoseMode) == 4 && sizeof(proxXrTimeSource) == 4, "ABI");
 #endif

@@ -76,6 +76,7 @@ proxBodyDef proxDefaultBodyDef(void) {
   d.couplingDamping = c.linear_damping;
   d.couplingAngularStiffness = c.angular_stiffness;
   d.couplingAngularDamping = c.angular_damping;
+  d.apiVersion = PROX_API_VERSION;
   d.internalValue = kDefCookie;
   return d;
 }

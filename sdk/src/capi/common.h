@@ -110,12 +110,25 @@ inline void need_stopped(const runtime::World& w) {
   if (w.running()) fail(PROX_ERROR_BUSY, "the world's threads are running; call proxWorld_StopThreads first");
 }
 
+// The oldest minor version of this major one whose defs are laid out as
+// this library's (0.4 grew the device and thread defs and gave every def
+// its apiVersion).
+constexpr int32_t kOldestCompatibleMinor = 4;
+// Fails with PROX_ERROR_VERSION_MISMATCH unless apiVersion is one this
+// library takes; the message names the def's maker.
+void need_api_version(int32_t apiVersion, const char* maker);
+
 // Every def carries the cookie its proxDefault*Def() set; one that does not
-// was filled by hand (and its unset fields would be taken for choices).
+// was filled by hand (and its unset fields would be taken for choices). And
+// the API version it was made for (Steam Audio's rule): a program built
+// against an older minor version of the same major one runs on this library
+// (what it knows is still here, in its place), back to the oldest whose defs
+// are laid out as this one's; a newer minor or another major does not.
 template <typename Def>
 inline void need_def(const Def& def, const char* maker) {
   if (def.internalValue != kDefCookie)
     fail(PROX_ERROR_INVALID_ARGUMENT, std::string("def was not initialised with ") + maker + "()");
+  need_api_version(def.apiVersion, maker);
 }
 
 template <typename T>

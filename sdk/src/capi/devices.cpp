@@ -59,6 +59,7 @@ extern "C" {
 
 proxDeviceDef proxDefaultDeviceDef(void) {
   proxDeviceDef d{};
+  d.apiVersion = PROX_API_VERSION;
   d.internalValue = kDefCookie;
   return d;
 }
@@ -99,6 +100,7 @@ proxResult proxBody_SetDevice(proxBodyId tool, const proxDeviceDef* def) {
 proxScriptedDeviceDef proxDefaultScriptedDeviceDef(void) {
   proxScriptedDeviceDef d{};
   d.secondsPerPose = 0.001;
+  d.apiVersion = PROX_API_VERSION;
   d.internalValue = kDefCookie;
   return d;
 }

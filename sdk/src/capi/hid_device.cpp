@@ -81,12 +81,13 @@ proxHidDeviceDef proxDefaultHidDeviceDef(void) {
   d.outputRate = s.output_rate;
   d.workspace = s.workspace;
   d.maxForce = s.max_force;
+  d.apiVersion = PROX_API_VERSION;
   d.internalValue = kDefCookie;
   return d;
 }
 
-proxResult proxWorld_OpenHidDevice(proxWorldId world, const proxHidDeviceDef* def, proxHidDeviceId* device) {
-  return guard("proxWorld_OpenHidDevice", [&] {
+proxResult proxWorld_CreateHidDevice(proxWorldId world, const proxHidDeviceDef* def, proxHidDeviceId* device) {
+  return guard("proxWorld_CreateHidDevice", [&] {
     need(device, "device");
     *device = proxHidDeviceId{};
     world_of(world);
@@ -188,6 +189,10 @@ proxResult proxHidDevice_GetPose(proxHidDeviceId device, proxPose* pose) {
 
 proxResult proxHidDevice_Destroy(proxHidDeviceId device) {
   return guard("proxHidDevice_Destroy", [&] { destroy_device(kHid, slot_of(device), &device.world); });
+}
+
+proxResult proxWorld_OpenHidDevice(proxWorldId world, const proxHidDeviceDef* def, proxHidDeviceId* device) {
+  return proxWorld_CreateHidDevice(world, def, device);
 }
 
 proxResult proxHidDevice_Close(proxHidDeviceId device) {

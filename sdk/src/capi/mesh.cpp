@@ -113,6 +113,7 @@ extern "C" {
 
 proxMeshDef proxDefaultMeshDef(void) {
   proxMeshDef d{};
+  d.apiVersion = PROX_API_VERSION;
   d.internalValue = kDefCookie;
   return d;
 }

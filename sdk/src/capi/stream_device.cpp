@@ -56,6 +56,7 @@ proxStreamDeviceDef proxDefaultStreamDeviceDef(void) {
   d.delay = s.delay;
   d.maxExtrapolation = s.max_extrapolation;
   d.staleAfter = s.stale_after;
+  d.apiVersion = PROX_API_VERSION;
   d.internalValue = kDefCookie;
   return d;
 }

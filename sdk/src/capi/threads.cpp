@@ -29,6 +29,7 @@ proxThreadsDef proxDefaultThreadsDef(void) {
   d.hapticPriority = s.realtime_priority[0];
   d.localPriority = s.realtime_priority[1];
   d.lockMemory = s.lock_memory ? 1 : 0;
+  d.apiVersion = PROX_API_VERSION;
   d.internalValue = kDefCookie;
   d.traceCapacity = s.trace_capacity;
   d.globalWorkerCount = s.global_workers;

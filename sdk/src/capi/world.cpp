@@ -21,12 +21,6 @@ proxWorldDef proxDefaultWorldDef(void) {
 
 namespace {
 
-// The oldest minor version of this major one whose public structs are laid
-// out as this library's: 0.4 grew proxDeviceDef and proxStreamDeviceDef
-// (maxStiffness, damping), so a 0.3 program's defs would be read past
-// their end.
-constexpr int32_t kOldestCompatibleMinor = 4;
-
 void destroy_world(proxWorldId world) {
   world_of(world);  // validates id and thread
   std::unique_ptr<runtime::World> doomed;
@@ -48,18 +42,6 @@ proxResult proxCreateWorld(const proxWorldDef* def, proxWorldId* world) {
     need(world, "world");
     *world = proxWorldId{};
     need_def(*def, "proxDefaultWorldDef");
-    // A program built against an older minor version of the same major one
-    // runs on this library (what it knows is still here, in its place), back
-    // to the oldest whose structs are laid out as this one's; a newer minor
-    // one or another major one does not.
-    const int32_t major = def->apiVersion >> 16, minor = def->apiVersion & 0xFFFF;
-    if (major != PROX_VERSION_MAJOR || minor > PROX_VERSION_MINOR || minor < kOldestCompatibleMinor)
-      fail(PROX_ERROR_VERSION_MISMATCH,
-           "def comes from API version " + std::to_string(major) + "." + std::to_string(minor) +
-               "; this library is " + std::to_string(PROX_VERSION_MAJOR) + "." +
-               std::to_string(PROX_VERSION_MINOR) + " and takes defs of " + std::to_string(PROX_VERSION_MAJOR) +
-               "." + std::to_string(kOldestCompatibleMinor) + " to " + std::to_string(PROX_VERSION_MAJOR) + "." +
-               std::to_string(PROX_VERSION_MINOR) + " (rebuild the program against this library's headers)");
     const int32_t method = enum_value(def->method);
     if (method != PROX_METHOD_PRECISE && method != PROX_METHOD_ORIGINAL && method != PROX_METHOD_REFERENCE)
       fail(PROX_ERROR_INVALID_ARGUMENT, "def->method is not a proxMethod");

@@ -93,6 +93,7 @@ proxXrDeviceDef proxDefaultXrDeviceDef(void) {
   d.tickRate = 1000.0;
   d.pulseDuration = 0.02;
   d.maxExtrapolation = 0.05;
+  d.apiVersion = PROX_API_VERSION;
   d.internalValue = kDefCookie;
   return d;
 }

@@ -96,7 +96,7 @@ namespace Proxima
             {
                 settings.path = utf8 != null ? pin.AddrOfPinnedObject() : IntPtr.Zero;
                 HidDeviceId device = default(HidDeviceId);
-                Native.Check(Call(() => Native.proxWorld_OpenHidDevice(world, ref settings, out device)));
+                Native.Check(Call(() => Native.proxWorld_CreateHidDevice(world, ref settings, out device)));
                 return new HidDevice(device);
             }
             finally

@@ -13,6 +13,8 @@ namespace Proxima
     [StructLayout(LayoutKind.Sequential)]
     internal partial struct DeviceDef
     {
+        // PROX_API_VERSION, set by proxDefaultDeviceDef()
+        public int ApiVersion;
         // Writes the tool's world pose and returns nonzero, or returns 0 when the device has no pose this
         // tick (the force then fades out). A non-finite pose or a quaternion far from unit length counts as
         // none. Required.
@@ -54,6 +56,8 @@ namespace Proxima
     [StructLayout(LayoutKind.Sequential)]
     internal partial struct ScriptedDeviceDef
     {
+        // PROX_API_VERSION, set by proxDefaultScriptedDeviceDef()
+        public int ApiVersion;
         // the path; copied
         public IntPtr Poses;
         // >= 1
@@ -123,6 +127,8 @@ namespace Proxima
     [StructLayout(LayoutKind.Sequential)]
     public partial struct StreamDeviceSettings
     {
+        // PROX_API_VERSION, set by proxDefaultStreamDeviceDef()
+        readonly int apiVersion;
         // default PROX_STREAM_INTERPOLATE
         public StreamMode Mode;
         // s, >= 0: INTERPOLATE's latency (default 1/90: one 90 Hz frame)

@@ -57,6 +57,8 @@ namespace Proxima
     [StructLayout(LayoutKind.Sequential)]
     public partial struct HidDeviceSettings
     {
+        // PROX_API_VERSION, set by proxDefaultHidDeviceDef()
+        readonly int apiVersion;
         // a proxHidDeviceInfo.path, or NULL: the first supported device matching ...
         internal IntPtr path;
         // ... these ids (0: any)
@@ -168,6 +170,8 @@ namespace Proxima
         internal static extern Result proxEnumerateHidDevices([Out] HidDeviceInfo[] infos, int capacity, out int count);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern HidDeviceSettings proxDefaultHidDeviceDef();
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern Result proxWorld_CreateHidDevice(WorldId world, ref HidDeviceSettings def, out HidDeviceId device);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern Result proxWorld_OpenHidDevice(WorldId world, ref HidDeviceSettings def, out HidDeviceId device);
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

@@ -66,6 +66,8 @@ namespace Proxima
     [StructLayout(LayoutKind.Sequential)]
     public partial struct XrDeviceSettings
     {
+        // PROX_API_VERSION, set by proxDefaultXrDeviceDef()
+        readonly int apiVersion;
         // the app's: every call goes through it
         public IntPtr GetInstanceProcAddr;
         public ulong Instance;

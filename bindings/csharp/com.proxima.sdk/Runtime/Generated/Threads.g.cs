@@ -38,6 +38,8 @@ namespace Proxima
     [StructLayout(LayoutKind.Sequential)]
     public partial struct ThreadSettings
     {
+        // PROX_API_VERSION, set by proxDefaultThreadsDef()
+        readonly int apiVersion;
         // Hz, in [1, 100000]: the haptic loop (default 1000)
         public double HapticRate;
         // Hz, 0 or >= 1: local tracking (default 1000; 0: back to back)

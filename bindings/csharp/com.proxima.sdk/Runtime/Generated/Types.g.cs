@@ -103,7 +103,7 @@ namespace Proxima
     [StructLayout(LayoutKind.Sequential)]
     internal partial struct WorldDef
     {
-        // set by proxDefaultWorldDef to PROX_API_VERSION
+        // PROX_API_VERSION, set by proxDefaultWorldDef()
         public int ApiVersion;
         public Method Method;
         // m: contacts farther apart are not wanted (> 0)
@@ -123,6 +123,8 @@ namespace Proxima
     [StructLayout(LayoutKind.Sequential)]
     internal partial struct MeshDef
     {
+        // PROX_API_VERSION, set by proxDefaultMeshDef()
+        public int ApiVersion;
         // x, y, z per vertex
         public IntPtr Positions;
         public uint VertexCount;
@@ -216,6 +218,8 @@ namespace Proxima
     [StructLayout(LayoutKind.Sequential)]
     internal partial struct BodyDef
     {
+        // PROX_API_VERSION, set by proxDefaultBodyDef()
+        public int ApiVersion;
         public MeshId Mesh;
         public BodyType Type;
         public Pose Pose;
