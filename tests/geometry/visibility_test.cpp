@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace prox::geometry {
 namespace {
 
@@ -91,6 +93,37 @@ TEST(Visibility, SoundTestKeepsPairsTheConesCanReach) {
   // direction pass; the pair then depends on the other direction alone.
   const double flat[3] = {90 * deg, 90 * deg, 90 * deg};
   EXPECT_TRUE(visibility_pretest(a, up, flat, b, down, flat));
+}
+
+// The spreads as the hierarchy keeps them, cosine and sine: the decision
+// turns where the angle says (the pair above needs 16.7 degrees), whatever
+// positive factor the pair carries (a refit's cone rounds its cosine down
+// and its sine up, unnormalised), and no known cone passes everything.
+TEST(Visibility, SpreadsAsCosineAndSineDecideAsTheirAngle) {
+  const Triangle a{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}};
+  const Triangle b{{Vec3(1.3, 0, 1), Vec3(1.3, 1, 1), Vec3(2.3, 0, 1)}};
+  const Vec3 up[3] = {Vec3(0, 0, 1), Vec3(0, 0, 1), Vec3(0, 0, 1)};
+  const Vec3 down[3] = {Vec3(0, 0, -1), Vec3(0, 0, -1), Vec3(0, 0, -1)};
+  const double deg = 3.14159265358979323846 / 180.0;
+  const auto at = [&](double degrees, double factor) {
+    const Spread s = Spread::of_angle(degrees * deg);
+    const Spread scaled{factor * s.cos, factor * s.sin};
+    const Spread three[3] = {scaled, scaled, scaled};
+    return visibility_pretest(a, up, three, b, down, three);
+  };
+  for (const double factor : {1.0, 0.5, 1.0 + 1e-12, 3.0}) {
+    SCOPED_TRACE(factor);
+    EXPECT_FALSE(at(10.0, factor));
+    EXPECT_FALSE(at(16.0, factor));
+    EXPECT_TRUE(at(17.5, factor));
+    EXPECT_TRUE(at(45.0, factor));
+  }
+  const Spread unknown[3] = {Spread{}, Spread{}, Spread{}};
+  EXPECT_TRUE(visibility_pretest(a, up, unknown, b, down, unknown));
+  const Spread negative[3] = {Spread{-0.1, 1.0}, Spread{-0.1, 1.0}, Spread{-0.1, 1.0}};
+  EXPECT_TRUE(visibility_pretest(a, up, negative, b, down, negative));
+  EXPECT_EQ(Spread::of_angle(90 * deg).cos, 0.0);
+  EXPECT_EQ(Spread::of_angle(std::nan("")).cos, 0.0);
 }
 
 }  // namespace

@@ -90,7 +90,7 @@ struct PreciseLeaf {
       return false;
     }
     Vec3 na[3], nb[3];
-    double sa[3], sb[3];
+    geometry::Spread sa[3], sb[3];
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t va = ma.indices(ta)[k], vb = mb.indices(tb)[k];
       na[k] = ma.vertex_normal(va);

@@ -44,7 +44,11 @@ double longest_edge(const Triangle& t) {
 
 namespace {
 
-bool projects_onto_spread(const Triangle& a, const Vec3 normals_a[3], const double* spread_a,
+// A cone whose widest direction is within this angle's sine of the plane
+// (1e-6 rad) reaches along it: the projection is undefined, the pair passes.
+const double kFlatCos = std::sin(1e-6);
+
+bool projects_onto_spread(const Triangle& a, const Vec3 normals_a[3], const Spread* spread_a,
                           const Triangle& b, double margin) {
   const Vec3 n = glm::cross(b.v[1] - b.v[0], b.v[2] - b.v[0]);
   const double n_len = std::sqrt(glm::dot(n, n));
@@ -67,10 +71,18 @@ bool projects_onto_spread(const Triangle& a, const Vec3 normals_a[3], const doub
     if (!(m_len > 0.0) || std::abs(along) <= 1e-6 * m_len) return true;
     const double height = glm::dot(b.v[0] - a.v[i], unit_n);
     if (spread_a) {
-      const double tilt = std::acos(std::min(1.0, std::abs(along) / m_len));
-      const double far = tilt + spread_a[i];
-      if (far >= 0.5 * 3.14159265358979323846 - 1e-6) return true;  // the cone reaches along the plane
-      grow = std::max(grow, std::abs(height) * (std::tan(far) - std::tan(tilt)));
+      // tan(tilt + spread) - tan(tilt) from cosines and sines: the tilt's
+      // (theta, from the plane's normal) from a dot and a cross product, the
+      // spread's as kept; tan(far) is their sum's sine over its cosine, which
+      // a common factor of the spread's pair leaves unchanged.
+      const Spread& spread = spread_a[i];
+      if (!(spread.cos > 0.0)) return true;  // nothing known of the cone
+      const Vec3 side = glm::cross(m, unit_n);
+      const double cos_tilt = std::abs(along) / m_len, sin_tilt = std::sqrt(glm::dot(side, side)) / m_len;
+      const double cos_far = cos_tilt * spread.cos - sin_tilt * spread.sin;
+      const double sin_far = sin_tilt * spread.cos + cos_tilt * spread.sin;
+      if (cos_far <= kFlatCos) return true;  // the cone reaches along the plane
+      grow = std::max(grow, std::abs(height) * (sin_far / cos_far - sin_tilt / cos_tilt));
     }
     const double t = height / along;
     const Vec3 projected = a.v[i] + t * m - b.v[0];
@@ -93,10 +105,22 @@ bool visibility_pretest(const Triangle& a, const Vec3 normals_a[3], const Triang
   return projects_onto(a, normals_a, b, margin) && projects_onto(b, normals_b, a, margin);
 }
 
-bool visibility_pretest(const Triangle& a, const Vec3 normals_a[3], const double spread_a[3],
-                        const Triangle& b, const Vec3 normals_b[3], const double spread_b[3], double margin) {
+bool visibility_pretest(const Triangle& a, const Vec3 normals_a[3], const Spread spread_a[3],
+                        const Triangle& b, const Vec3 normals_b[3], const Spread spread_b[3], double margin) {
   return projects_onto_spread(a, normals_a, spread_a, b, margin) &&
          projects_onto_spread(b, normals_b, spread_b, a, margin);
+}
+
+bool visibility_pretest(const Triangle& a, const Vec3 normals_a[3], const double spread_a[3],
+                        const Triangle& b, const Vec3 normals_b[3], const double spread_b[3], double margin) {
+  const Spread sa[3] = {Spread::of_angle(spread_a[0]), Spread::of_angle(spread_a[1]), Spread::of_angle(spread_a[2])};
+  const Spread sb[3] = {Spread::of_angle(spread_b[0]), Spread::of_angle(spread_b[1]), Spread::of_angle(spread_b[2])};
+  return visibility_pretest(a, normals_a, sa, b, normals_b, sb, margin);
+}
+
+Spread Spread::of_angle(double radians) {
+  if (!(radians < 0.5 * 3.14159265358979323846)) return {};
+  return {std::cos(radians), std::sin(radians)};
 }
 
 }  // namespace prox::geometry

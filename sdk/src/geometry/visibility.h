@@ -22,6 +22,16 @@ bool visibility_pretest(const Triangle& a, const Vec3 normals_a[3], const Triang
 // plane of `b`, overlap `b`?
 bool projects_onto(const Triangle& a, const Vec3 normals_a[3], const Triangle& b, double margin);
 
+// A vertex's spread (below) as the cosine and sine of its half-angle, the
+// form the hierarchy keeps and the test takes, so that neither a refit nor
+// the test runs trigonometry. Any positive multiple of the pair names the
+// same angle; cos <= 0: a right angle or more, nothing known.
+struct Spread {
+  double cos = 0.0, sin = 1.0;
+  // From an angle in radians; pi/2 or more: nothing known.
+  static Spread of_angle(double radians);
+};
+
 // The sound form Proxima uses. `spread_a[i]` is the half-angle (radians) of
 // the cone of directions in which a closest pair can leave the surface at
 // vertex i: the largest angle between its vertex normal and the normals of
@@ -35,6 +45,10 @@ bool projects_onto(const Triangle& a, const Vec3 normals_a[3], const Triangle& b
 // paper's test loses at sharp features.
 bool visibility_pretest(const Triangle& a, const Vec3 normals_a[3], const double spread_a[3],
                         const Triangle& b, const Vec3 normals_b[3], const double spread_b[3],
+                        double margin = 1e-9);
+// The same with the spreads as cosines and sines (what the searches pass).
+bool visibility_pretest(const Triangle& a, const Vec3 normals_a[3], const Spread spread_a[3],
+                        const Triangle& b, const Vec3 normals_b[3], const Spread spread_b[3],
                         double margin = 1e-9);
 
 }  // namespace prox::geometry

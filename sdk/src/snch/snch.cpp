@@ -217,7 +217,7 @@ Snch::Snch(const Mesh& mesh) {
   compute_vertex_spread(mesh);
   stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
   stats_.memory_bytes = nodes_.capacity() * sizeof(SnchNode) + boxes_.capacity() * sizeof(SnchBox) +
-                        vertex_spread_.capacity() * sizeof(double) + open_.capacity();
+                        vertex_spread_.capacity() * sizeof(geometry::Spread) + open_.capacity();
   plan_refit();
   // The ratio a refit of the unmoved mesh would measure, so that
   // degradation starts at exactly 1.
@@ -237,7 +237,7 @@ Snch::Snch(const Mesh& mesh) {
 }
 
 void Snch::compute_vertex_spread(const Mesh& mesh) {
-  vertex_spread_.assign(mesh.vertex_count(), 0.5 * kPi);
+  vertex_spread_.assign(mesh.vertex_count(), geometry::Spread{});
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
     const Vec3& normal = mesh.vertex_normal(v);
     if (open_[v] || !(glm::dot(normal, normal) > 0.0)) continue;
@@ -246,7 +246,7 @@ void Snch::compute_vertex_spread(const Mesh& mesh) {
       const Vec3& f = mesh.face_normal(*t);
       if (glm::dot(f, f) > 0.0) spread = std::max(spread, angle_between(normal, f));
     }
-    vertex_spread_[v] = std::min(spread, 0.5 * kPi);
+    vertex_spread_[v] = geometry::Spread::of_angle(spread);
   }
 }
 
@@ -353,7 +353,9 @@ void Snch::refit(const Mesh& mesh, WorkerPool* pool) {
     const auto end = static_cast<std::uint32_t>(std::min<std::size_t>(vertices, (k + 1) * kVertexChunk));
     for (auto v = static_cast<std::uint32_t>(k * kVertexChunk); v < end; ++v) {
       cones[v] = refit_vertex_cone(mesh, v);
-      vertex_spread_[v] = cones[v].cos > 0.0 ? std::atan2(cones[v].sin, cones[v].cos) : 0.5 * kPi;
+      // The cone's own pair: a cosine rounded down and a sine rounded up,
+      // an angle a little wider than the spread, never narrower.
+      vertex_spread_[v] = cones[v].cos > 0.0 ? geometry::Spread{cones[v].cos, cones[v].sin} : geometry::Spread{};
     }
   };
   const std::size_t chunks = (std::size_t{vertices} + kVertexChunk - 1) / kVertexChunk;

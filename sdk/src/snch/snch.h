@@ -3,6 +3,7 @@
 #pragma once
 
 #include "mesh/mesh.h"
+#include "geometry/visibility.h"
 #include "snch/cone.h"
 
 #include <cstdint>
@@ -89,11 +90,12 @@ class Snch {
   // open, non-manifold or folded surface, which can be touched from either
   // side: the searches then take each normal cone together with its reverse.
   bool two_sided() const { return two_sided_; }
-  // The half-angle (radians) of the cone of directions in which a closest
-  // pair can leave the surface at vertex v, about its vertex normal: the
-  // largest angle to a face normal around it; pi/2 where the surface is open
-  // or folded. Used by the visibility pre-test.
-  double vertex_spread(std::uint32_t v) const { return vertex_spread_[v]; }
+  // The half-angle of the cone of directions in which a closest pair can
+  // leave the surface at vertex v, about its vertex normal, as its cosine
+  // and sine: the largest angle to a face normal around it; a right angle
+  // (nothing known) where the surface is open or folded. Used by the
+  // visibility pre-test.
+  const geometry::Spread& vertex_spread(std::uint32_t v) const { return vertex_spread_[v]; }
 
   // The leaf cone of triangle t (also stored in its leaf): it bounds the
   // normals of every triangle sharing a vertex with t, or holds every
@@ -105,7 +107,7 @@ class Snch {
 
   std::vector<SnchNode> nodes_;
   std::vector<SnchBox> boxes_;
-  std::vector<double> vertex_spread_;
+  std::vector<geometry::Spread> vertex_spread_;
   // By vertex: the surface around it is open or folded (topology alone, so
   // a refit keeps it).
   std::vector<std::uint8_t> open_;
