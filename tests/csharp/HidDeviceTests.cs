@@ -48,7 +48,7 @@ namespace Proxima.HidTests
                 HidDeviceSettings settings = HidDeviceSettings.Default;
                 Assert.AreEqual(0.1, settings.LinearSpeed, 1e-12, "the header's default");
                 settings.InitialPose = Start;
-                HidDevice pad = world.OpenHidDevice(settings, HidDevice.Enumerate()[0].Path);
+                HidDevice pad = world.CreateHidDevice(settings, HidDevice.Enumerate()[0].Path);
                 Assert.IsTrue(pad.IsValid);
                 tool.SetDevice(pad);
                 world.StartThreads(ThreadSettings.Default);
@@ -87,6 +87,8 @@ namespace Proxima.HidTests
             using (var world = new World())
             {
                 var e = Assert.Throws<ProximaException>(() => world.OpenHidDevice(HidDeviceSettings.Default, "/dev/hidraw9"));
+                Assert.AreEqual(Result.File, e.Result, e.Message);
+                e = Assert.Throws<ProximaException>(() => world.CreateHidDevice(HidDeviceSettings.Default, "/dev/hidraw9"));
                 Assert.AreEqual(Result.File, e.Result, e.Message);
             }
         }

@@ -393,6 +393,12 @@ class World:
         check(hid_function("proxWorld_CreateHidDevice")(self._idp[0], d, idp))
         return HidDevice(self, idp)
 
+    def create_hid_device(self, device=None, **settings):
+        """open_hid_device under the name the other devices have
+        (create_stream_device, create_xr_device) and the C API gives it
+        (proxWorld_CreateHidDevice); the same arguments."""
+        return self.open_hid_device(device, **settings)
+
     def create_xr_device(self, *, get_instance_proc_addr, instance, session, base_space, pose_action,
                          haptic_action=0, subaction_path=0, tool_in_grip=None, base_to_world=None,
                          session_state=None, **settings):

@@ -32,7 +32,7 @@ with proxima.World() as world:
     cube = world.create_mesh(*CUBE)
     world.create_body(cube, "static")
     tool = world.create_body(cube, "tool", pose=start)
-    pad = world.open_hid_device(found[0], initial_pose=start)
+    pad = world.create_hid_device(found[0], initial_pose=start)
     out["valid"] = pad.valid
     tool.set_device(pad)
     world.start_threads()
@@ -139,3 +139,5 @@ def test_no_device_plugged_in_is_a_file_error(world):
     # predictable, so only a path that cannot be one.
     with pytest.raises(proxima.FileError):
         world.open_hid_device("/nonexistent/hidraw")
+    with pytest.raises(proxima.FileError):
+        world.create_hid_device("/nonexistent/hidraw")

@@ -264,6 +264,18 @@ namespace Proxima
         public HidDevice OpenHidDevice(HidDeviceSettings settings, string path = null) =>
             HidDevice.Open(id, settings, path);
 
+        /// <summary>OpenHidDevice under the name the other devices have
+        /// (CreateStreamDevice, CreateXrDevice) and the C API gives it
+        /// (proxWorld_CreateHidDevice).</summary>
+        public HidDevice CreateHidDevice() => OpenHidDevice();
+
+        /// <summary>OpenHidDevice(HidDeviceInfo) by the C API's name.</summary>
+        public HidDevice CreateHidDevice(HidDeviceInfo device) => OpenHidDevice(device);
+
+        /// <summary>OpenHidDevice(HidDeviceSettings, string) by the C API's name.</summary>
+        public HidDevice CreateHidDevice(HidDeviceSettings settings, string path = null) =>
+            OpenHidDevice(settings, path);
+
         /// <summary>Hands Proxima an XR controller (see XrDevice) and starts its thread: the
         /// app's OpenXR objects and the device's settings, from XrDeviceSettings.Default.
         /// Call it after the app attached its action sets; attach the device with
