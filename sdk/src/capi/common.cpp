@@ -25,9 +25,9 @@ void need_api_version(int32_t apiVersion, const char* maker) {
   if (major == PROX_VERSION_MAJOR && minor >= kOldestCompatibleMinor && minor <= PROX_VERSION_MINOR) return;
   const auto version = [](int32_t a, int32_t b) { return std::to_string(a) + "." + std::to_string(b); };
   fail(PROX_ERROR_VERSION_MISMATCH,
-       "def->apiVersion says API version " + version(major, minor) + " (as " + maker + "() of that version sets it); this library is " +
-           version(PROX_VERSION_MAJOR, PROX_VERSION_MINOR) + " and takes defs of " +
-           version(PROX_VERSION_MAJOR, kOldestCompatibleMinor) + " to " +
+       "def->apiVersion says API version " + version(major, minor) + " (as " + maker +
+           "() of that version sets it); this library is " + version(PROX_VERSION_MAJOR, PROX_VERSION_MINOR) +
+           " and takes defs of " + version(PROX_VERSION_MAJOR, kOldestCompatibleMinor) + " to " +
            version(PROX_VERSION_MAJOR, PROX_VERSION_MINOR) + " (rebuild the program against this library's headers)");
 }
 
