@@ -128,11 +128,14 @@ int main(int argc, char** argv) {
   for (std::string& e : env) envp.push_back(e.data());
   envp.push_back(nullptr);
 
-  // The first report of each device at once; it is read when the command opens it.
-  std::vector<bool> first_sent(names.size(), false);
-  for (const Send& s : sends)
+  // The first report of each device at once; it is read when the command
+  // opens it. `done` says which sends are behind us.
+  std::vector<bool> first_sent(names.size(), false), done(sends.size(), false);
+  for (std::size_t k = 0; k < sends.size(); ++k) {
+    const Send& s = sends[k];
     if (!s.after_output && !first_sent[std::size_t(s.device)])
-      bus.send(s.device, s.report), first_sent[std::size_t(s.device)] = true;
+      bus.send(s.device, s.report), first_sent[std::size_t(s.device)] = true, done[k] = true;
+  }
 
   const pid_t child = fork();
   if (child == 0) {
@@ -143,11 +146,6 @@ int main(int argc, char** argv) {
   // The later reports, timed from when each device's first was read.
   std::thread feeder([&] {
     std::vector<double> opened(names.size(), -1.0);
-    std::vector<bool> done(sends.size(), false);
-    std::vector<bool> first(names.size(), false);
-    for (std::size_t k = 0; k < sends.size(); ++k)
-      if (!sends[k].after_output && !first[std::size_t(sends[k].device)])
-        done[k] = true, first[std::size_t(sends[k].device)] = true;
     const auto now = [] {
       return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
     };
