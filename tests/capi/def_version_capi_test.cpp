@@ -20,81 +20,91 @@ struct DefKind {
   std::function<proxResult(int32_t version)> attempt;
 };
 
+// `def` at `version`, made by make(&def, &id) and let go of by destroy(id)
+// when made: what the maker said.
+template <class Id, class Def, class Make, class Destroy>
+proxResult made_at(Def def, int32_t version, Make make, Destroy destroy) {
+  def.apiVersion = version;
+  Id id{};
+  const proxResult r = make(&def, &id);
+  if (r == PROX_SUCCESS) destroy(id);
+  return r;
+}
+
 }  // namespace
 
 class DefVersions : public CApi {
  protected:
   std::vector<DefKind> kinds() {
-    std::vector<DefKind> k;
-    k.push_back({"proxDefaultWorldDef", [](int32_t v) {
-                   proxWorldDef d = proxDefaultWorldDef();
-                   d.apiVersion = v;
-                   proxWorldId w{};
-                   const proxResult r = proxCreateWorld(&d, &w);
-                   if (r == PROX_SUCCESS) proxWorld_Destroy(w);
-                   return r;
-                 }});
-    k.push_back({"proxDefaultMeshDef", [this](int32_t v) {
-                   proxMeshDef d = cube.def();
-                   d.apiVersion = v;
-                   proxMeshId m{};
-                   const proxResult r = proxWorld_CreateMesh(world, &d, &m);
-                   if (r == PROX_SUCCESS) proxMesh_Destroy(m);
-                   return r;
-                 }});
-    k.push_back({"proxDefaultBodyDef", [this](int32_t v) {
-                   proxBodyDef d = proxDefaultBodyDef();
-                   d.apiVersion = v;
-                   d.mesh = mesh;
-                   d.pose = at(3);
-                   proxBodyId b{};
-                   const proxResult r = proxWorld_CreateBody(world, &d, &b);
-                   if (r == PROX_SUCCESS) proxBody_Destroy(b);
-                   return r;
-                 }});
-    k.push_back({"proxDefaultDeviceDef", [this](int32_t v) {
-                   proxDeviceDef d = proxDefaultDeviceDef();
-                   d.apiVersion = v;
-                   d.readPose = [](void*, proxPose* p) -> proxBool {
-                     *p = at(0);
-                     return 1;
-                   };
-                   return proxBody_SetDevice(tool, &d);
-                 }});
-    k.push_back({"proxDefaultScriptedDeviceDef", [this](int32_t v) {
-                   const proxPose path[] = {at(0), at(1)};
-                   proxScriptedDeviceDef d = proxDefaultScriptedDeviceDef();
-                   d.apiVersion = v;
-                   d.poses = path;
-                   d.poseCount = 2;
-                   proxScriptedDeviceId s{};
-                   const proxResult r = proxWorld_CreateScriptedDevice(world, &d, &s);
-                   if (r == PROX_SUCCESS) proxScriptedDevice_Destroy(s);
-                   return r;
-                 }});
-    k.push_back({"proxDefaultStreamDeviceDef", [this](int32_t v) {
-                   proxStreamDeviceDef d = proxDefaultStreamDeviceDef();
-                   d.apiVersion = v;
-                   proxStreamDeviceId s{};
-                   const proxResult r = proxWorld_CreateStreamDevice(world, &d, &s);
-                   if (r == PROX_SUCCESS) proxStreamDevice_Destroy(s);
-                   return r;
-                 }});
-    k.push_back({"proxDefaultThreadsDef", [this](int32_t v) {
-                   proxThreadsDef d = proxDefaultThreadsDef();
-                   d.apiVersion = v;
-                   d.hapticCore = d.localCore = d.globalCore = -1;
-                   const proxResult r = proxWorld_StartThreads(world, &d);
-                   if (r == PROX_SUCCESS) proxWorld_StopThreads(world);
-                   return r;
-                 }});
-    return k;
+    proxScriptedDeviceDef scripted = proxDefaultScriptedDeviceDef();
+    scripted.poses = path_;
+    scripted.poseCount = 2;
+    proxBodyDef body = proxDefaultBodyDef();
+    body.mesh = mesh;
+    body.pose = at(3);
+    proxDeviceDef device = proxDefaultDeviceDef();
+    device.readPose = [](void*, proxPose* p) -> proxBool {
+      *p = at(0);
+      return 1;
+    };
+    const proxWorldId w = world;
+    const proxBodyId t = tool;
+    return {
+        {"proxDefaultWorldDef",
+         [](int32_t v) { return made_at<proxWorldId>(proxDefaultWorldDef(), v, proxCreateWorld, proxWorld_Destroy); }},
+        {"proxDefaultMeshDef",
+         [w, def = cube.def()](int32_t v) {
+           return made_at<proxMeshId>(
+               def, v, [w](const proxMeshDef* d, proxMeshId* m) { return proxWorld_CreateMesh(w, d, m); },
+               proxMesh_Destroy);
+         }},
+        {"proxDefaultBodyDef",
+         [w, body](int32_t v) {
+           return made_at<proxBodyId>(
+               body, v, [w](const proxBodyDef* d, proxBodyId* b) { return proxWorld_CreateBody(w, d, b); },
+               proxBody_Destroy);
+         }},
+        {"proxDefaultDeviceDef",
+         [t, device](int32_t v) {
+           proxDeviceDef d = device;
+           d.apiVersion = v;
+           return proxBody_SetDevice(t, &d);
+         }},
+        {"proxDefaultScriptedDeviceDef",
+         [w, scripted](int32_t v) {
+           return made_at<proxScriptedDeviceId>(
+               scripted, v,
+               [w](const proxScriptedDeviceDef* d, proxScriptedDeviceId* s) {
+                 return proxWorld_CreateScriptedDevice(w, d, s);
+               },
+               proxScriptedDevice_Destroy);
+         }},
+        {"proxDefaultStreamDeviceDef",
+         [w](int32_t v) {
+           return made_at<proxStreamDeviceId>(
+               proxDefaultStreamDeviceDef(), v,
+               [w](const proxStreamDeviceDef* d, proxStreamDeviceId* s) {
+                 return proxWorld_CreateStreamDevice(w, d, s);
+               },
+               proxStreamDevice_Destroy);
+         }},
+        {"proxDefaultThreadsDef",
+         [w](int32_t v) {
+           proxThreadsDef d = proxDefaultThreadsDef();
+           d.hapticCore = d.localCore = d.globalCore = -1;
+           d.apiVersion = v;
+           const proxResult r = proxWorld_StartThreads(w, &d);
+           if (r == PROX_SUCCESS) proxWorld_StopThreads(w);
+           return r;
+         }},
+    };
   }
   void SetUp() override {
     CApi::SetUp();
     tool = body(PROX_BODY_TOOL, at(2));
   }
   proxBodyId tool{};
+  const proxPose path_[2] = {at(0), at(1)};
 };
 
 TEST_F(DefVersions, EveryDefTakesItsOwnAndOlderMinorsOfItsMajorAndNothingElse) {
