@@ -8,10 +8,12 @@
 #include "geometry/triangle_intersection.h"
 #include "geometry/visibility.h"
 #include "runtime/haptic.h"
+#include "snch/snch.h"
 
 #include <benchmark/benchmark.h>
 #include <glm/geometric.hpp>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -137,6 +139,68 @@ void BM_HapticEvaluate(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * 1024);
 }
 BENCHMARK(BM_HapticEvaluate)->Arg(0)->Arg(1)->ArgName("closest");
+
+// A sheet of 2 n^2 triangles under a travelling wave, one frame a step:
+// moving the vertices (Mesh::set_vertices, which recomputes the normals) and
+// refitting its hierarchy (Snch::refit), each timed on its own
+// (docs/dynamic-scenes.md has the whole frame's figures).
+struct WavedSheet {
+  Mesh mesh;
+  std::vector<std::vector<double>> frames;
+  explicit WavedSheet(int n) {
+    std::vector<double> xyz;
+    std::vector<std::uint32_t> idx;
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) xyz.insert(xyz.end(), {0.2 * i / n, 0.2 * j / n, 0.0});
+    const auto row = static_cast<std::uint32_t>(n + 1);
+    for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(n); ++j)
+      for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i) {
+        const std::uint32_t a = j * row + i, b = a + 1, c = a + row, d = c + 1;
+        idx.insert(idx.end(), {a, b, d, a, d, c});
+      }
+    Status status;
+    mesh = Mesh::build({xyz.data(), static_cast<std::uint32_t>(xyz.size() / 3), idx.data(),
+                        static_cast<std::uint32_t>(idx.size() / 3)},
+                       status);
+    for (int f = 0; f < 8; ++f) {
+      std::vector<double> moved = xyz;
+      for (std::size_t v = 0; v < moved.size(); v += 3)
+        moved[v + 2] = 0.01 * std::sin(2.0 * 3.14159265358979 * (moved[v] / 0.05 - f / 60.0));
+      frames.push_back(std::move(moved));
+    }
+  }
+};
+
+void BM_MeshSetVertices(benchmark::State& state) {
+  WavedSheet sheet(static_cast<int>(state.range(0)));
+  std::size_t f = 0;
+  for (auto _ : state) {
+    const Status s = sheet.mesh.set_vertices(sheet.frames[f++ % 8].data(), sheet.mesh.vertex_count());
+    benchmark::DoNotOptimize(s);
+  }
+  state.counters["triangles"] = sheet.mesh.triangle_count();
+}
+BENCHMARK(BM_MeshSetVertices)->Arg(71)->Arg(173)->ArgName("cells")->Unit(benchmark::kMillisecond);
+
+void BM_SnchRefit(benchmark::State& state) {
+  WavedSheet sheet(static_cast<int>(state.range(0)));
+  Snch snch(sheet.mesh);
+  // Two frames' shapes ready, refitted to in turn: the loop times the refit
+  // alone, on data as warm as after the mesh's own set_vertices (eight
+  // shapes would not stay in the cache together).
+  std::vector<Mesh> shapes;
+  for (const auto& xyz : {sheet.frames[1], sheet.frames[2]}) {
+    shapes.push_back(sheet.mesh);
+    (void)shapes.back().set_vertices(xyz.data(), sheet.mesh.vertex_count());
+  }
+  std::size_t f = 0;
+  for (auto _ : state) {
+    snch.refit(shapes[f++ % shapes.size()]);
+    benchmark::DoNotOptimize(snch.root().radius);
+  }
+  state.counters["triangles"] = sheet.mesh.triangle_count();
+}
+BENCHMARK(BM_SnchRefit)->Arg(71)->Arg(173)->ArgName("cells")->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
