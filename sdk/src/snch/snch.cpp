@@ -35,10 +35,11 @@ Sphere triangle_sphere(const Triangle& t) {
   const double nn = glm::dot(n, n);
   const Vec3 offset = (glm::dot(a, a) * glm::cross(b, n) + glm::dot(b, b) * glm::cross(n, a)) / (2.0 * nn);
   const Vec3 center = t.v[0] + offset;
-  // Rounding may leave a vertex a hair outside: take the farthest.
-  double r = 0.0;
-  for (const Vec3& v : t.v) r = std::max(r, glm::length(v - center));
-  return {center, r};
+  // Rounding may leave a vertex a hair outside: take the farthest (one
+  // square root, of the largest square: the same as the largest root).
+  double r2 = 0.0;
+  for (const Vec3& v : t.v) r2 = std::max(r2, glm::dot(v - center, v - center));
+  return {center, std::sqrt(r2)};
 }
 
 // The box from lo to hi, its half extents rounded up so that it holds both.
