@@ -14,6 +14,8 @@
 namespace prox {
 namespace {
 
+constexpr double kHalfTurn = 3.14159265358979323846;  // pi, a triangle's angle sum
+
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
 // A sum of unit normals shorter than this fraction of the weight that went
@@ -143,8 +145,14 @@ FaceGeometry face_geometry(const Vec3& a, const Vec3& b, const Vec3& c) {
   const double len = length_of(n);
   if (!(len > 0.0)) return g;
   g.normal = n / len;
-  // |cross| is twice the area at every corner; atan2 stays accurate near 0 and pi.
-  for (int i = 0; i < 3; ++i) g.angle[i] = std::atan2(len, -glm::dot(e[i], e[(i + 2) % 3]));
+  // |cross| is twice the area at every corner; atan2 stays accurate near 0
+  // and pi. The angle opposite the longest edge, the largest (pi / 3 or
+  // more), is what the other two leave of pi: one atan2 fewer, and a
+  // rounding of its size.
+  const int i = k, j = (k + 1) % 3;
+  g.angle[i] = std::atan2(len, -glm::dot(e[i], e[(i + 2) % 3]));
+  g.angle[j] = std::atan2(len, -glm::dot(e[j], e[(j + 2) % 3]));
+  g.angle[(k + 2) % 3] = std::max(0.0, kHalfTurn - g.angle[i] - g.angle[j]);
   return g;
 }
 
