@@ -11,6 +11,8 @@ namespace prox {
 using Vec2 = glm::dvec2;
 using Vec3 = glm::dvec3;
 
+inline constexpr double kPi = 3.14159265358979323846;
+
 // A triangle by value. Vertex order defines the face normal (counter-clockwise
 // seen from the side the normal points to) and the edge numbering: edge k joins
 // vertex k and vertex (k + 1) % 3.

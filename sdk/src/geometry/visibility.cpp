@@ -119,7 +119,7 @@ bool visibility_pretest(const Triangle& a, const Vec3 normals_a[3], const double
 }
 
 Spread Spread::of_angle(double radians) {
-  if (!(radians < 0.5 * 3.14159265358979323846)) return {};
+  if (!(radians < 0.5 * kPi)) return {};
   return {std::cos(radians), std::sin(radians)};
 }
 

@@ -14,8 +14,6 @@
 namespace prox {
 namespace {
 
-constexpr double kHalfTurn = 3.14159265358979323846;  // pi, a triangle's angle sum
-
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
 // A sum of unit normals shorter than this fraction of the weight that went
@@ -152,7 +150,7 @@ FaceGeometry face_geometry(const Vec3& a, const Vec3& b, const Vec3& c) {
   const int i = k, j = (k + 1) % 3;
   g.angle[i] = std::atan2(len, -glm::dot(e[i], e[(i + 2) % 3]));
   g.angle[j] = std::atan2(len, -glm::dot(e[j], e[(j + 2) % 3]));
-  g.angle[(k + 2) % 3] = std::max(0.0, kHalfTurn - g.angle[i] - g.angle[j]);
+  g.angle[(k + 2) % 3] = std::max(0.0, kPi - g.angle[i] - g.angle[j]);
   return g;
 }
 

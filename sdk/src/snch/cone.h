@@ -10,8 +10,6 @@
 
 namespace prox {
 
-inline constexpr double kPi = 3.14159265358979323846;
-
 // The angle between two unit vectors, robust near 0 and pi (atan2 of the
 // cross and dot products instead of acos of a rounded dot product).
 inline double angle_between(const Vec3& a, const Vec3& b) {
