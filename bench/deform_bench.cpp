@@ -32,6 +32,7 @@
 #include "runtime/scripted_device.h"
 #include "runtime/threads.h"
 #include "runtime/world.h"
+#include "waved_sheet.h"
 
 #include <glm/geometric.hpp>
 
@@ -52,7 +53,6 @@ using namespace prox;
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr double kPi = 3.14159265358979323846;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -64,25 +64,9 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-struct Shape {
-  std::string name;
-  std::vector<double> positions;  // x y z per vertex
-  std::vector<std::uint32_t> indices;
-};
-
-// A square sheet of n x n cells, two triangles each, side 0.2 m, facing +z.
-Shape sheet(int n) {
-  Shape s{"sheet-" + std::to_string(2 * n * n), {}, {}};
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) s.positions.insert(s.positions.end(), {0.2 * i / n, 0.2 * j / n, 0.0});
-  const auto row = static_cast<std::uint32_t>(n + 1);
-  for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(n); ++j)
-    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i) {
-      const std::uint32_t a = j * row + i, b = a + 1, c = a + row, d = c + 1;
-      s.indices.insert(s.indices.end(), {a, b, d, a, d, c});
-    }
-  return s;
-}
+using bench::Shape;
+using bench::sheet;
+using bench::wave;
 
 // A UV sphere of radius r about the origin, `n` rings and 2n segments,
 // counter-clockwise seen from outside (closed: its poles are shared vertices).
@@ -108,17 +92,6 @@ Shape sphere(double r, int n) {
   return s;
 }
 
-// The wave at frame f of a 60 Hz animation: each vertex moved along `axis`
-// by amplitude * sin(2 pi (x / wavelength - f / 60)), x along the first axis.
-void wave(const Mesh& rest, int frame, int axis, double amplitude, double wavelength, std::vector<double>& out) {
-  out.resize(3 * std::size_t{rest.vertex_count()});
-  for (std::uint32_t v = 0; v < rest.vertex_count(); ++v) {
-    Vec3 p = rest.vertex(v);
-    p[axis] += amplitude * std::sin(2.0 * kPi * (p.x / wavelength - frame / 60.0));
-    for (int c = 0; c < 3; ++c) out[3 * std::size_t{v} + static_cast<std::size_t>(c)] = p[c];
-  }
-}
-
 struct RefitRow {
   std::string mesh;
   std::uint32_t triangles = 0;
@@ -133,8 +106,7 @@ RefitRow refit_row(const Shape& shape, int frames, int axis, double amplitude, d
   RefitRow row;
   row.mesh = shape.name;
   Status status;
-  const MeshInput input{shape.positions.data(), static_cast<std::uint32_t>(shape.positions.size() / 3),
-                        shape.indices.data(), static_cast<std::uint32_t>(shape.indices.size() / 3)};
+  const MeshInput input = shape.input();
   const Mesh rest = Mesh::build(input, status);
   if (!status) throw std::runtime_error(shape.name + ": " + status.message());
   row.triangles = rest.triangle_count();
@@ -146,7 +118,7 @@ RefitRow refit_row(const Shape& shape, int frames, int axis, double amplitude, d
   // contacts to find but no exactly parallel flat field (where which of the
   // tied LMDs a reduction keeps depends on the order the tree hands them out).
   const Shape probe_shape = sheet(8);
-  Mesh probe = Mesh::build({probe_shape.positions.data(), 81, probe_shape.indices.data(), 128}, status);
+  Mesh probe = Mesh::build(probe_shape.input(), status);
   const Snch probe_snch(probe);
   const Aabb box = rest.bounds();
   const Vec3 middle = 0.5 * (box.min + box.max);
@@ -278,15 +250,11 @@ bool matched(const LmdPair& p, const std::vector<LmdPair>& found, double toleran
 TrackRow track_row(int frames) {
   const Shape shape = sheet(71);
   Status status;
-  const Mesh rest = Mesh::build({shape.positions.data(), static_cast<std::uint32_t>(shape.positions.size() / 3),
-                                 shape.indices.data(), static_cast<std::uint32_t>(shape.indices.size() / 3)},
-                                status);
+  const Mesh rest = Mesh::build(shape.input(), status);
   Mesh mesh = rest;
   Snch snch(rest);
   const Shape ball = sphere(0.01, 12);
-  const Mesh probe = Mesh::build({ball.positions.data(), static_cast<std::uint32_t>(ball.positions.size() / 3),
-                                  ball.indices.data(), static_cast<std::uint32_t>(ball.indices.size() / 3)},
-                                 status);
+  const Mesh probe = Mesh::build(ball.input(), status);
   if (!status) throw std::runtime_error("sphere: " + status.message());
   const Snch probe_snch(probe);
   const Pose probe_pose{glm::dmat3(1.0), Vec3(0.1, 0.1, 0.002 + 0.001 + 0.01)};

@@ -9,12 +9,13 @@
 #include "geometry/visibility.h"
 #include "runtime/haptic.h"
 #include "snch/snch.h"
+#include "waved_sheet.h"
 
 #include <benchmark/benchmark.h>
 #include <glm/geometric.hpp>
 
-#include <cmath>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 namespace {
@@ -140,34 +141,20 @@ void BM_HapticEvaluate(benchmark::State& state) {
 }
 BENCHMARK(BM_HapticEvaluate)->Arg(0)->Arg(1)->ArgName("closest");
 
-// A sheet of 2 n^2 triangles under a travelling wave, one frame a step:
-// moving the vertices (Mesh::set_vertices, which recomputes the normals) and
-// refitting its hierarchy (Snch::refit), each timed on its own
-// (docs/dynamic-scenes.md has the whole frame's figures).
+// A sheet of 2 n^2 triangles under the travelling wave of
+// proxima_deform_bench, one frame a step: moving the vertices
+// (Mesh::set_vertices, which recomputes the normals) and refitting its
+// hierarchy (Snch::refit), each timed on its own (docs/dynamic-scenes.md has
+// the whole frame's figures).
 struct WavedSheet {
   Mesh mesh;
   std::vector<std::vector<double>> frames;
   explicit WavedSheet(int n) {
-    std::vector<double> xyz;
-    std::vector<std::uint32_t> idx;
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) xyz.insert(xyz.end(), {0.2 * i / n, 0.2 * j / n, 0.0});
-    const auto row = static_cast<std::uint32_t>(n + 1);
-    for (std::uint32_t j = 0; j < static_cast<std::uint32_t>(n); ++j)
-      for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i) {
-        const std::uint32_t a = j * row + i, b = a + 1, c = a + row, d = c + 1;
-        idx.insert(idx.end(), {a, b, d, a, d, c});
-      }
     Status status;
-    mesh = Mesh::build({xyz.data(), static_cast<std::uint32_t>(xyz.size() / 3), idx.data(),
-                        static_cast<std::uint32_t>(idx.size() / 3)},
-                       status);
-    for (int f = 0; f < 8; ++f) {
-      std::vector<double> moved = xyz;
-      for (std::size_t v = 0; v < moved.size(); v += 3)
-        moved[v + 2] = 0.01 * std::sin(2.0 * 3.14159265358979 * (moved[v] / 0.05 - f / 60.0));
-      frames.push_back(std::move(moved));
-    }
+    mesh = Mesh::build(bench::sheet(n).input(), status);
+    if (!status) throw std::runtime_error(status.message());
+    frames.resize(8);
+    for (int f = 0; f < 8; ++f) bench::wave(mesh, f, 2, 0.005, 0.1, frames[static_cast<std::size_t>(f)]);
   }
 };
 
