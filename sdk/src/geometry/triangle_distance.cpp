@@ -46,7 +46,7 @@ struct CandidateList {
 };
 
 // Whether every point of pts is within tol2 (squared) of segment [a, b].
-bool segment_holds(const Vec3* pts, int n, const Vec3& a, const Vec3& b, double tol2) {
+[[gnu::always_inline]] inline bool segment_holds(const Vec3* pts, int n, const Vec3& a, const Vec3& b, double tol2) {
   const Vec3 d = b - a;
   const double dd = length2(d);
   const double inv = dd > 0.0 ? 1.0 / dd : 0.0;
@@ -62,7 +62,7 @@ bool segment_holds(const Vec3* pts, int n, const Vec3& a, const Vec3& b, double 
 // triangles; the choice must not depend on vertex order, so it is the nearest
 // vertex (coincident vertices are the same place) and the longest edge (on a
 // collinear triangle it spans the others).
-Feature feature_holding(const Triangle& t, const Vec3* pts, int n, double tol) {
+[[gnu::always_inline]] inline Feature feature_holding(const Triangle& t, const Vec3* pts, int n, double tol) {
   int best_vertex = -1;
   double best2 = tol * tol;
   for (int k = 0; k < 3; ++k) {
@@ -342,26 +342,33 @@ struct Bounds {
 void add_near_candidates(const Prepared& pa, const Prepared& pb, const Bounds& bounds, double tie_slack,
                          CandidateList& cand) {
   double best2 = INFINITY;
-  auto may_tie = [&](double bound) { return bound - bounds.error <= std::sqrt(best2) + tie_slack; };
+  // A candidate may tie with the minimum while its bound, less the rounding,
+  // is within the tie slack of the best so far: bound <= reach.
+  double reach = INFINITY;
+  auto may_tie = [&](double bound) { return bound - bounds.error <= reach; };
+  auto found = [&](double d2) {
+    if (d2 < best2) best2 = d2, reach = std::sqrt(best2) + tie_slack;
+  };
+  // Vertex i of a (o = i) or of b (o = 3 + i) against the other's face.
+  const double* vertex_bound = &bounds.vertex[0][0];
   auto vertex_face = [&](int o) {
-    const int k = o / 3, i = o % 3;
-    if (k == 0) {
-      const Vec3& v = pa.t->v[i];
+    if (o < 3) {
+      const Vec3& v = pa.t->v[o];
       cand.add(v, pb.closest_point(v));
     } else {
-      const Vec3& v = pb.t->v[i];
+      const Vec3& v = pb.t->v[o - 3];
       cand.add(pa.closest_point(v), v);
     }
-    best2 = std::min(best2, cand.c[cand.n - 1].d2);
+    found(cand.c[cand.n - 1].d2);
   };
   // Vertices against faces: the nearest by its bound first (a small best
   // early prunes the rest), then the others that may still tie.
   int first = 0;
   for (int o = 1; o < 6; ++o)
-    if (bounds.vertex[o / 3][o % 3] < bounds.vertex[first / 3][first % 3]) first = o;
+    if (vertex_bound[o] < vertex_bound[first]) first = o;
   vertex_face(first);
   for (int o = 0; o < 6; ++o)
-    if (o != first && may_tie(bounds.vertex[o / 3][o % 3])) vertex_face(o);
+    if (o != first && may_tie(vertex_bound[o])) vertex_face(o);
   // Edges against edges.
   const Triangle &a = *pa.t, &b = *pb.t;
   struct Rough {
@@ -378,7 +385,7 @@ void add_near_candidates(const Prepared& pa, const Prepared& pb, const Bounds& b
                                           near_parallel)) {
         if (near_parallel) rough[roughs++] = {cand.n, i, j, st};
         cand.add(a.v[i] + st.x * pa.e[i], b.v[j] + st.y * pb.e[j]);
-        best2 = std::min(best2, cand.c[cand.n - 1].d2);
+        found(cand.c[cand.n - 1].d2);
       }
     }
   // Nearly parallel edges' points polished after the loop (rare; a call in
@@ -435,8 +442,15 @@ TriangleDistance closest_result(const CandidateList& cand, const Triangle& a, co
   r.distance = min_d;
   r.point_a = sum_a / static_cast<double>(ties) + origin;
   r.point_b = sum_b / static_cast<double>(ties) + origin;
-  r.feature_a = feature_holding(a, on_a, ties, kFeatureTolerance * size_a);
-  r.feature_b = feature_holding(b, on_b, ties, kFeatureTolerance * size_b);
+  // One closest pair is the common case: a constant count, inlined, lets
+  // the compiler drop the loops over the points.
+  if (ties == 1) {
+    r.feature_a = feature_holding(a, on_a, 1, kFeatureTolerance * size_a);
+    r.feature_b = feature_holding(b, on_b, 1, kFeatureTolerance * size_b);
+  } else {
+    r.feature_a = feature_holding(a, on_a, ties, kFeatureTolerance * size_a);
+    r.feature_b = feature_holding(b, on_b, ties, kFeatureTolerance * size_b);
+  }
   return r;
 }
 
