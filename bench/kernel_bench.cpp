@@ -55,6 +55,34 @@ void BM_TriangleDistance(benchmark::State& state) {
 }
 BENCHMARK(BM_TriangleDistance)->Arg(0)->Arg(10)->Arg(100)->ArgName("gap_percent");
 
+// The distance alone (a branch and bound's leaf), with no limit, and the
+// full answer within a limit that about half the pairs are past (their
+// mean distance at a 10% gap): what a search with a cutoff pays.
+void BM_TriangleDistanceValue(benchmark::State& state) {
+  const std::vector<Pair> pairs = make_pairs(0.1);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Pair& p = pairs[i++ % pairs.size()];
+    benchmark::DoNotOptimize(geometry::triangle_distance_value(p.a, p.b));
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_TriangleDistanceValue);
+
+void BM_TriangleDistanceWithin(benchmark::State& state) {
+  const std::vector<Pair> pairs = make_pairs(0.1);
+  std::size_t i = 0, within = 0;
+  for (auto _ : state) {
+    const Pair& p = pairs[i++ % pairs.size()];
+    geometry::TriangleDistance d;
+    within += geometry::triangle_distance_within(p.a, p.b, 0.43, d) ? 1 : 0;
+    benchmark::DoNotOptimize(d);
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["within"] = static_cast<double>(within) / static_cast<double>(i);
+}
+BENCHMARK(BM_TriangleDistanceWithin);
+
 void BM_TrianglesIntersect(benchmark::State& state) {
   const std::vector<Pair> pairs = make_pairs(static_cast<double>(state.range(0)) / 100.0);
   std::size_t i = 0;

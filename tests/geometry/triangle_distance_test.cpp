@@ -2,9 +2,13 @@
 // covers the random families against the quad-precision reference.
 #include "geometry/triangle_distance.h"
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
 
 namespace prox::geometry {
 namespace {
@@ -151,6 +155,62 @@ TEST(TriangleDistance, SegmentSegmentParameters) {
   // Zero-length segments.
   st = closest_params_segment_segment(Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(-1, 1, 0), Vec3(1, 1, 0));
   EXPECT_NEAR(st.y, 0.5, 1e-15);
+}
+
+bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+bool same_bits(const Vec3& x, const Vec3& y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+
+// triangle_distance_within and triangle_distance_value against
+// triangle_distance, every field bit for bit, at limits below, at and above
+// each pair's distance, over the families whose pruning differs: close,
+// far, crossing, parallel faces (many tied candidates), parallel edges,
+// slivers, far from the origin and touching, in both argument orders.
+TEST(TriangleDistance, WithinALimitItIsTheFullAnswerBitForBitAndPastItNothing) {
+  std::mt19937_64 rng(20261205);
+  std::uniform_real_distribution<double> u(-0.5, 0.5), scale(0.0, 2.0);
+  auto vec = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+  const double inf = std::numeric_limits<double>::infinity();
+  int within = 0, past = 0, mismatches = 0;
+  for (int k = 0; k < 16000; ++k) {
+    Triangle a, b;
+    for (Vec3& v : a.v) v = vec();
+    const Vec3 n = glm::normalize(glm::cross(a.v[1] - a.v[0], a.v[2] - a.v[0]));
+    const int family = k % 8;
+    const double gap = family == 0 ? 0.0 : family == 1 ? 0.1 : family == 2 ? 1.0 : 0.01;
+    for (Vec3& v : b.v) v = 0.9 * vec() + n * (0.5 + gap * 2.0 * (u(rng) + 0.5));
+    if (family == 3)  // tilted by 1e-7, or by 1e-13: candidates tied within the tie tolerance, not rounding
+      for (int i = 0; i < 3; ++i) b.v[i] = a.v[i] + 0.01 * n + (k % 16 == 3 ? 1e-7 : 1e-13) * vec();
+    if (family == 4) b.v[0] = a.v[0] + 1e-3 * n, b.v[1] = a.v[1] + 1e-3 * n;
+    if (family == 5) a.v[2] = 0.5 * (a.v[0] + a.v[1]) + 1e-9 * n;
+    if (family == 6)
+      for (Triangle* t : {&a, &b})
+        for (Vec3& v : t->v) v += Vec3(1e4, -3e3, 7e2);
+    if (family == 7) b.v[0] = a.v[1];
+    for (const bool swap : {false, true}) {
+      const Triangle& x = swap ? b : a;
+      const Triangle& y = swap ? a : b;
+      const TriangleDistance full = triangle_distance(x, y);
+      for (const double limit : {scale(rng) * full.distance, full.distance, std::nextafter(full.distance, 0.0), 0.0,
+                                 inf}) {
+        TriangleDistance got;
+        const bool in = triangle_distance_within(x, y, limit, got);
+        const double value = triangle_distance_value(x, y, limit);
+        const bool want_in = !(full.distance > limit);
+        (want_in ? within : past) += 1;
+        const bool same = in == want_in && same_bits(value, want_in ? full.distance : inf) &&
+                          (!in || (same_bits(got.distance, full.distance) && same_bits(got.point_a, full.point_a) &&
+                                   same_bits(got.point_b, full.point_b) && got.feature_a == full.feature_a &&
+                                   got.feature_b == full.feature_b && got.intersects == full.intersects));
+        if (!same && ++mismatches <= 5)
+          ADD_FAILURE() << "family " << family << " pair " << k << (swap ? " swapped" : "") << " limit " << limit
+                        << " distance " << full.distance << " within " << in << " value " << value;
+      }
+    }
+  }
+  EXPECT_EQ(mismatches, 0);
+  // Both outcomes were exercised in earnest.
+  EXPECT_GT(within, 60000);
+  EXPECT_GT(past, 30000);
 }
 
 }  // namespace

@@ -107,12 +107,14 @@ struct PreciseLeaf {
       return false;
     }
     ++stats.distance_evaluations;
-    const geometry::TriangleDistance d = geometry::triangle_distance(a, b);
+    // A pair past the cutoff is dropped as soon as that is certain, without
+    // its closest points.
+    geometry::TriangleDistance d;
+    if (!geometry::triangle_distance_within(a, b, q.cutoff, d)) return false;
     if (d.intersects) {
       ++stats.intersecting_pairs;
       return false;
     }
-    if (d.distance > q.cutoff) return false;
     ++stats.candidates;
     out.push_back(make_pair(q, ta, tb, d.point_a, d.point_b, d.distance, d.feature_a, d.feature_b));
     return true;
@@ -308,7 +310,8 @@ double closest_pair(const PairQuery& q, double bound, bool first_below, std::uin
       if (beyond_plane(a, q.mesh_a->face_normal(na.first), b, limit) ||
           beyond_plane(b, frames.b_to_a.rotate(q.mesh_b->face_normal(nb.first)), a, limit))
         continue;
-      const double d = geometry::triangle_distance(a, b).distance;
+      // The distance alone, and only if within the limit (+infinity past it).
+      const double d = geometry::triangle_distance_value(a, b, limit);
       if (d < best) {
         best = d;
         limit = std::min(limit, d);

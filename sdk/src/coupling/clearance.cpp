@@ -65,7 +65,7 @@ bool closer_than(const PairQuery& q, double distance, NodeStack& stack) {
       if (beyond_plane(a, q.mesh_a->face_normal(na.first), b, distance) ||
           beyond_plane(b, b_to_a.rotate(q.mesh_b->face_normal(nb.first)), a, distance))
         continue;
-      if (geometry::triangle_distance(a, b).distance < distance) return true;
+      if (geometry::triangle_distance_value(a, b, distance) < distance) return true;
       continue;
     }
     // Split the larger node; both children that come close enough go on

@@ -1,5 +1,6 @@
 #include "geometry/triangle_distance.h"
 
+#include "geometry/closest_points.h"
 #include "geometry/predicates.h"
 #include "geometry/triangle_intersection.h"
 
@@ -12,22 +13,17 @@
 namespace prox::geometry {
 namespace {
 
-double length2(const Vec3& v) { return glm::dot(v, v); }
+using detail::closest_point_with_normal;
+using detail::edge_outside;
+using detail::interior_params_segment_segment;
+using detail::length2;
+using detail::polished;
+using detail::robust_normal;
 
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
-// Edges closer to parallel than sin^2 = 1e-6 (0.06 degrees) polish their
-// interior closest points (interior_params_segment_segment).
-constexpr double kNearParallel = 1e-6;
 
 double longest_edge(const Triangle& t) {
   return std::sqrt(std::max({length2(t.v[1] - t.v[0]), length2(t.v[2] - t.v[1]), length2(t.v[0] - t.v[2])}));
-}
-
-Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 d = b - a;
-  const double dd = length2(d);
-  if (dd == 0.0) return a;
-  return a + std::clamp(glm::dot(p - a, d) / dd, 0.0, 1.0) * d;
 }
 
 // A candidate closest pair. Non-intersecting triangles reach their minimum
@@ -96,107 +92,6 @@ Vec3 local_origin(const Triangle& a, const Triangle& b) {
   for (const Triangle* t : {&a, &b})
     for (const Vec3& v : t->v) lo = glm::min(lo, v), hi = glm::max(hi, v);
   return 0.5 * lo + 0.5 * hi;
-}
-
-// The plane normal of t, unnormalised, or zero for a degenerate triangle. The
-// rounding of a cross product of nearly parallel edges (a sliver) leaves an
-// error of relative size eps / aspect in every direction; the part along the
-// longest edge would tilt the plane where it matters, so it is projected out.
-// What remains only turns the plane about that edge, which moves points
-// within the sliver's width by a negligible amount.
-Vec3 robust_normal(const Triangle& t) {
-  const Vec3 e[3] = {t.v[1] - t.v[0], t.v[2] - t.v[1], t.v[0] - t.v[2]};
-  int k = 0;
-  for (int i = 1; i < 3; ++i)
-    if (length2(e[i]) > length2(e[k])) k = i;
-  const Vec3& longest = e[k];
-  Vec3 n = glm::cross(longest, e[(k + 1) % 3]);
-  const double ll = length2(longest);
-  if (ll > 0.0) n -= (glm::dot(n, longest) / ll) * longest;
-  return n;
-}
-
-// Whether q is beyond edge k (from vertex k to k + 1), given m[k], a normal
-// of the edge in the triangle's plane pointing inwards, and d[i] = q - v[i]
-// with dd[i] its squared length. The test is taken from the edge's end
-// nearer q: its error is then relative to that distance, not to the
-// triangle's size. Taken from a far end, a point within rounding of a line
-// passes its test either way, and a point just behind a sliver's sharp
-// vertex (within eps L / angle of it) could pass both long edges' tests and
-// be projected onto the face, off by up to that much. A test that overflows
-// to NaN (coordinates near 1e80) counts as outside, so the edges decide.
-inline bool edge_outside(const Vec3 (&m)[3], const Vec3 (&d)[3], const double (&dd)[3], int k) {
-  const int j = k == 2 ? 0 : k + 1;
-  return !(glm::dot(m[k], dd[j] < dd[k] ? d[j] : d[k]) >= 0.0);
-}
-
-// With the triangle's robust_normal computed once by the caller.
-Vec3 closest_point_with_normal(const Vec3& p, const Triangle& t, const Vec3& n) {
-  const Vec3 &a = t.v[0], &b = t.v[1], &c = t.v[2];
-  const double nn = length2(n);
-  if (nn > 0.0) {
-    // Project onto the plane; keep the projection when it falls inside
-    // (edge tests against the normal, so any winding works).
-    const Vec3 q = p - (glm::dot(p - a, n) / nn) * n;
-    const Vec3 d[3] = {q - a, q - b, q - c};
-    const double dd[3] = {length2(d[0]), length2(d[1]), length2(d[2])};
-    const Vec3 m[3] = {glm::cross(n, b - a), glm::cross(n, c - b), glm::cross(n, a - c)};
-    if (!edge_outside(m, d, dd, 0) && !edge_outside(m, d, dd, 1) && !edge_outside(m, d, dd, 2)) return q;
-  }
-  // Outside (or a degenerate triangle): the closest point is on an edge.
-  Vec3 best = closest_point_on_segment(p, a, b);
-  double best_d2 = length2(p - best);
-  for (const auto& [u, v] : {std::pair<const Vec3&, const Vec3&>{b, c}, {c, a}}) {
-    const Vec3 x = closest_point_on_segment(p, u, v);
-    const double d2 = length2(p - x);
-    if (d2 < best_d2) best = x, best_d2 = d2;
-  }
-  return best;
-}
-
-// Nearly parallel lines (sin^2 of their angle below kNearParallel): the
-// critical point's s and t carry errors of eps / sin along the lines. One
-// step of projecting each line's point onto the other, each well
-// conditioned and never farther, takes the distance back to rounding
-// (5e-15 -> 2e-17 of the size at 1 um in the stress family
-// near_parallel_edges). Clamped to the segments, which the critical point
-// was inside.
-Vec2 polished(const Vec3& p0, const Vec3& d, double dd, const Vec3& q0, const Vec3& e, double ee, Vec2 st) {
-  const double s = std::clamp(glm::dot(q0 + st.y * e - p0, d) / dd, 0.0, 1.0);
-  const double t = std::clamp(glm::dot(p0 + s * d - q0, e) / ee, 0.0, 1.0);
-  return Vec2(s, t);
-}
-
-// The closest points of segments p0 + s d and q0 + t e, s, t in [0, 1],
-// when they lie inside both (the lines' critical point), or, for exactly
-// parallel segments that overlap, the middle of the overlap; false when the
-// closest points include an end of a segment. Inlined by force: it is in
-// the kernel's inner loop, and called from two places GCC would not inline
-// it into both (3% more instructions a call).
-[[gnu::always_inline]] inline bool interior_params_segment_segment(const Vec3& p0, const Vec3& d, double dd,
-                                                                   const Vec3& q0, const Vec3& e, double ee,
-                                                                   Vec2& st, bool& near_parallel) {
-  const Vec3 n = glm::cross(d, e);
-  const double nn = length2(n);
-  const Vec3 r = q0 - p0;
-  if (nn > 0.0) {
-    // Lines p0 + s d and q0 + t e: s = ((q0 - p0) x e) . n / |n|^2 and
-    // t = ((q0 - p0) x d) . n / |n|^2. The cross product keeps more accuracy
-    // than the normal equations' |d|^2 |e|^2 - (d.e)^2 for near-parallel lines.
-    const double s = glm::dot(glm::cross(r, e), n) / nn;
-    const double t = glm::dot(glm::cross(r, d), n) / nn;
-    st = Vec2(s, t);
-    near_parallel = nn < kNearParallel * dd * ee;
-    return s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0;
-  }
-  near_parallel = false;
-  if (!(dd > 0.0 && ee > 0.0)) return false;
-  const double u0 = glm::dot(r, d) / dd, u1 = glm::dot(r + e, d) / dd;
-  const double lo = std::max(0.0, std::min(u0, u1)), hi = std::min(1.0, std::max(u0, u1));
-  if (!(lo <= hi)) return false;
-  const double s = 0.5 * (lo + hi);
-  st = Vec2(s, std::clamp(glm::dot(p0 + s * d - q0, e) / ee, 0.0, 1.0));
-  return true;
 }
 
 // Every candidate: each vertex against the other face, and each edge pair's
@@ -298,6 +193,7 @@ struct Bounds {
   double vertex[2][3];  // vertex i of triangle k from the other triangle
   double edge[2][3];    // edge i of triangle k from the other triangle
   double error = 0.0;
+  double apart = 0.0;      // the triangles' gap along the wider-apart normal: at most their distance
   bool separated = false;  // by more than `error` along a normal: the triangles do not meet
 
   // `rounding`: distance_rounding of the pair.
@@ -321,8 +217,9 @@ struct Bounds {
       }
       const double self_lo = std::min({proj[0], proj[1], proj[2]});
       const double self_hi = std::max({proj[0], proj[1], proj[2]});
-      separated = separated || gap(self_lo, self_hi) > error;
+      apart = std::max(apart, gap(self_lo, self_hi));
     }
+    separated = apart > error;
   }
 };
 
@@ -339,15 +236,19 @@ struct Bounds {
 // - A candidate whose lower bound (Bounds) is beyond the tie tolerance of
 //   the best one found so far cannot tie with the minimum, so it is not
 //   computed: it would not have tied in the full enumeration either.
-void add_near_candidates(const Prepared& pa, const Prepared& pb, const Bounds& bounds, double tie_slack,
-                         CandidateList& cand) {
+// - With a `limit` (finite where only a distance up to it matters), a
+//   candidate farther than it cannot be the minimum the caller wants, so
+//   the best so far is taken as no more than the limit.
+// `tie_slack` 0 keeps only what may be the minimum (the distance alone).
+void add_near_candidates(const Prepared& pa, const Prepared& pb, const Bounds& bounds, double limit,
+                         double tie_slack, CandidateList& cand) {
   double best2 = INFINITY;
   // A candidate may tie with the minimum while its bound, less the rounding,
-  // is within the tie slack of the best so far: bound <= reach.
-  double reach = INFINITY;
+  // is within the tie slack of the best so far (or of the limit): bound <= reach.
+  double reach = limit + tie_slack;
   auto may_tie = [&](double bound) { return bound - bounds.error <= reach; };
   auto found = [&](double d2) {
-    if (d2 < best2) best2 = d2, reach = std::sqrt(best2) + tie_slack;
+    if (d2 < best2) best2 = d2, reach = std::min(std::sqrt(best2), limit) + tie_slack;
   };
   // Vertex i of a (o = i) or of b (o = 3 + i) against the other's face.
   const double* vertex_bound = &bounds.vertex[0][0];
@@ -415,12 +316,18 @@ TriangleDistance intersection_result(const TriangleIntersection& hit, const Tria
   return r;
 }
 
+// The least squared distance among the candidates.
+double least_d2(const CandidateList& cand) {
+  double min_d2 = INFINITY;
+  for (int i = 0; i < cand.n; ++i) min_d2 = std::min(min_d2, cand.c[i].d2);
+  return min_d2;
+}
+
 // The result from the candidates of separate triangles (in local
 // coordinates, `origin` added back).
 TriangleDistance closest_result(const CandidateList& cand, const Triangle& a, const Triangle& b,
                                 const Vec3& origin, double size_a, double size_b, double tie_slack) {
-  double min_d2 = INFINITY;
-  for (int i = 0; i < cand.n; ++i) min_d2 = std::min(min_d2, cand.c[i].d2);
+  const double min_d2 = least_d2(cand);
   const double min_d = std::sqrt(min_d2);
 
   // Every candidate within the tie tolerance of the minimum is a closest pair
@@ -454,88 +361,99 @@ TriangleDistance closest_result(const CandidateList& cand, const Triangle& a, co
   return r;
 }
 
-}  // namespace
+// What a caller wants of a pair: `every`, the full enumeration even where
+// the pruned one applies; `limit`, only a distance up to it (past it, only
+// that it is past); kDetails, points, features and ties, else the distance
+// alone (a template argument: the full answer's path stays as lean as it was).
+struct Want {
+  bool every = false;
+  double limit = INFINITY;
+};
 
-Vec3 closest_point_on_triangle(const Vec3& p, const Triangle& t) {
-  return closest_point_with_normal(p, t, robust_normal(t));
-}
-
-Vec2 closest_params_segment_segment(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
-  const Vec3 d = p1 - p0, e = q1 - q0;
-  const double dd = length2(d), ee = length2(e);
-  // Candidates: each endpoint against the other segment (the minimum on the
-  // boundary of the parameter square), then the interior one. Taking the
-  // best by the distance actually achieved keeps near-parallel segments
-  // accurate: an ill-conditioned interior solution can only lose to an
-  // endpoint candidate, never win wrongly.
-  auto param_on = [](const Vec3& x, const Vec3& a, const Vec3& dir, double len2) {
-    return len2 == 0.0 ? 0.0 : std::clamp(glm::dot(x - a, dir) / len2, 0.0, 1.0);
-  };
-  Vec2 best(0.0);
-  double best_d2 = INFINITY;
-  auto consider = [&](double s, double t) {
-    const double d2 = length2((p0 + s * d) - (q0 + t * e));
-    if (d2 < best_d2) best_d2 = d2, best = Vec2(s, t);
-  };
-  consider(0.0, param_on(p0, q0, e, ee));
-  consider(1.0, param_on(p1, q0, e, ee));
-  consider(param_on(q0, p0, d, dd), 0.0);
-  consider(param_on(q1, p0, d, dd), 1.0);
-  // Then the interior critical point of non-parallel lines, or the middle of
-  // exactly parallel segments' overlap, which wins ties: a canonical choice.
-  Vec2 st;
-  bool near_parallel = false;
-  if (interior_params_segment_segment(p0, d, dd, q0, e, ee, st, near_parallel)) {
-    if (near_parallel) st = polished(p0, d, dd, q0, e, ee, st);
-    const double d2 = length2((p0 + st.x * d) - (q0 + st.y * e));
-    if (d2 < best_d2 || (d2 == best_d2 && length2(glm::cross(d, e)) == 0.0)) best_d2 = d2, best = st;
-  }
-  return best;
-}
-
-namespace {
-
-// `every`: the full enumeration even where the pruned one applies.
-TriangleDistance distance_of(const Triangle& a_world, const Triangle& b_world, bool every) {
-  const double size_a = longest_edge(a_world), size_b = longest_edge(b_world);
+// triangle_distance's answer into `out` (its distance alone without
+// kDetails) and true, or false when the distance is past want.limit.
+template <bool kDetails>
+bool distance_of(const Triangle& a_world, const Triangle& b_world, const Want& want, TriangleDistance& out) {
   const bool a_flat = collinear3d(a_world.v[0], a_world.v[1], a_world.v[2]);
   const bool b_flat = collinear3d(b_world.v[0], b_world.v[1], b_world.v[2]);
   const Vec3 origin = local_origin(a_world, b_world);
   const Triangle a = translated(a_world, origin), b = translated(b_world, origin);
+  const double rounding = distance_rounding(a, b);
+  // Sizes name features and set the tie slack; the distance alone needs
+  // neither: it is the least candidate's, ties or not.
+  const double size_a = kDetails ? longest_edge(a_world) : 0.0;
+  const double size_b = kDetails ? longest_edge(b_world) : 0.0;
   // Candidates tie within kTieTolerance of the size, or within their own
   // rounding where that is larger: triangles more than about 600 sizes
   // apart have local coordinates that large, and exactly tied candidates
   // (parallel faces or edges) then differ by more than the size's tolerance.
-  const double rounding = distance_rounding(a, b);
-  const double tie_slack = std::max(kTieTolerance * std::max(size_a, size_b), rounding);
+  const double tie_slack = kDetails ? std::max(kTieTolerance * std::max(size_a, size_b), rounding) : 0.0;
+  auto intersecting = [&](const TriangleIntersection& hit) {
+    if constexpr (kDetails) {
+      out = intersection_result(hit, a_world, b_world, size_a, size_b);
+    } else {
+      out.distance = 0.0;
+      out.intersects = true;
+    }
+    return !(0.0 > want.limit);
+  };
   CandidateList cand;
+  auto closest = [&] {
+    const double min_d2 = least_d2(cand);
+    if (std::sqrt(min_d2) > want.limit) return false;
+    if constexpr (kDetails) {
+      out = closest_result(cand, a, b, origin, size_a, size_b, tie_slack);
+    } else {
+      out.distance = std::sqrt(min_d2);
+      out.intersects = false;
+    }
+    return true;
+  };
 
-  if (!every && !a_flat && !b_flat) {
+  if (!want.every && !a_flat && !b_flat) {
     const Prepared pa(a), pb(b);
     if (pa.usable() && pb.usable()) {
       const Bounds bounds(pa, pb, rounding);
+      // Farther apart along a normal than the limit: so is every pair of
+      // points (the bounds' rounding margin taken off).
+      if (bounds.separated && bounds.apart - bounds.error > want.limit) return false;
       // Separated along a normal, they do not meet: the exact test would
       // say so too.
       if (!bounds.separated) {
         const TriangleIntersection hit = intersect_triangles(a_world, b_world, a_flat, b_flat);
-        if (hit.intersects) return intersection_result(hit, a_world, b_world, size_a, size_b);
+        if (hit.intersects) return intersecting(hit);
       }
-      add_near_candidates(pa, pb, bounds, tie_slack, cand);
-      return closest_result(cand, a, b, origin, size_a, size_b, tie_slack);
+      add_near_candidates(pa, pb, bounds, want.limit, tie_slack, cand);
+      return closest();
     }
   }
   const TriangleIntersection hit = intersect_triangles(a_world, b_world, a_flat, b_flat);
-  if (hit.intersects) return intersection_result(hit, a_world, b_world, size_a, size_b);
+  if (hit.intersects) return intersecting(hit);
   add_every_candidate(a, b, a_flat, b_flat, cand);
-  return closest_result(cand, a, b, origin, size_a, size_b, tie_slack);
+  return closest();
 }
 
 }  // namespace
 
-TriangleDistance triangle_distance(const Triangle& a, const Triangle& b) { return distance_of(a, b, false); }
+TriangleDistance triangle_distance(const Triangle& a, const Triangle& b) {
+  TriangleDistance out;
+  distance_of<true>(a, b, Want{}, out);
+  return out;
+}
 
 TriangleDistance triangle_distance_every_candidate(const Triangle& a, const Triangle& b) {
-  return distance_of(a, b, true);
+  TriangleDistance out;
+  distance_of<true>(a, b, Want{true, INFINITY}, out);
+  return out;
+}
+
+bool triangle_distance_within(const Triangle& a, const Triangle& b, double limit, TriangleDistance& out) {
+  return distance_of<true>(a, b, Want{false, limit}, out);
+}
+
+double triangle_distance_value(const Triangle& a, const Triangle& b, double limit) {
+  TriangleDistance out;
+  return distance_of<false>(a, b, Want{false, limit}, out) ? out.distance : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace prox::geometry

@@ -1,7 +1,10 @@
 // Exact triangle-triangle distance with closest points and closest features.
 #pragma once
 
+#include "geometry/closest_points.h"
 #include "geometry/types.h"
+
+#include <cmath>
 
 namespace prox::geometry {
 
@@ -33,18 +36,21 @@ TriangleDistance triangle_distance(const Triangle& a, const Triangle& b);
 // tested against: the same verdict and features, the distance to rounding.
 TriangleDistance triangle_distance_every_candidate(const Triangle& a, const Triangle& b);
 
+// triangle_distance(a, b), bit for bit, into `out` when its distance is at
+// most `limit` (returns true); false when it is more, found as soon as that
+// is certain, often before any closest pair is computed. For a search that
+// keeps only the pairs within a cutoff.
+bool triangle_distance_within(const Triangle& a, const Triangle& b, double limit, TriangleDistance& out);
+
+// triangle_distance(a, b).distance, bit for bit, when it is at most
+// `limit`; +infinity when it is more. Neither points nor features are
+// worked out, nor the candidates that could only tie with the closest: for
+// a branch and bound on the distance alone.
+double triangle_distance_value(const Triangle& a, const Triangle& b, double limit = INFINITY);
+
 // Relative tolerances, as fractions of a triangle's longest edge, used to
 // name features and to treat near-equal candidate distances as ties.
 inline constexpr double kFeatureTolerance = 1e-9;
 inline constexpr double kTieTolerance = 1e-12;
-
-// The closest point of triangle t to p. A
-// degenerate triangle is treated as the segment or point it spans.
-Vec3 closest_point_on_triangle(const Vec3& p, const Triangle& t);
-
-// Closest points of segments [p0, p1] and [q0, q1]: returns the parameters
-// s, t in [0, 1] of the closest points p0 + s (p1 - p0) and q0 + t (q1 - q0).
-// For parallel overlapping segments the middle of the overlap is returned.
-Vec2 closest_params_segment_segment(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1);
 
 }  // namespace prox::geometry
