@@ -3,7 +3,9 @@
 // bunny; and the SNCH's boxes, which both searches cull with.
 #include "support/scenes.h"
 
+#include "contact/descent.h"
 #include "contact/global_search.h"
+#include "geometry/triangle_distance.h"
 
 #include <gtest/gtest.h>
 #include <glm/common.hpp>
@@ -95,6 +97,78 @@ TEST(Snch, BoxesHoldTheirTriangles) {
       ++checked;
     }
     EXPECT_GT(checked, 0u) << pair.name;
+  }
+}
+
+// The triangles below node i, in the tree's order.
+std::vector<std::uint32_t> triangles_below(const Snch& snch, std::uint32_t i) {
+  std::vector<std::uint32_t> out, stack{i};
+  while (!stack.empty()) {
+    const SnchNode& n = snch.node(stack.back());
+    stack.pop_back();
+    if (n.is_leaf()) {
+      out.push_back(n.first);
+    } else {
+      stack.push_back(n.second);
+      stack.push_back(n.first);
+    }
+  }
+  return out;
+}
+
+// The closest-pair search's bound on a node pair (spheres, and A's box
+// against the box along A's axes around B's) against brute force: never
+// above the least exact distance between the triangles below the two
+// nodes. Node pairs are taken on dives from the roots towards the closer
+// children (mostly), where the bounds are tightest, at poses from touching
+// to a fifth of the size apart.
+TEST(MinimumDistance, TheNodePairBoundIsNeverAboveTheTrianglesBelowIt) {
+  for (const Pair& pair : pairs()) {
+    ASSERT_TRUE(pair.a && pair.b) << pair.name;
+    const double size = std::max(pair.a->size, pair.b->size);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int checked = 0, tight = 0;
+    for (const double gap : {1e-4, 1e-2, 0.2}) {
+      const Pose pose = pose_at_gap(*pair.a, *pair.b, gap * size, rng);
+      const PairQuery q = make_query(*pair.a, Pose{}, *pair.b, pose, 0.0);
+      const detail::Frames frames(q);
+      for (int dive = 0; dive < sampled_poses(60); ++dive) {
+        std::uint32_t ia = 0, ib = 0;
+        while (true) {
+          const std::vector<std::uint32_t> below_a = triangles_below(*q.snch_a, ia);
+          const std::vector<std::uint32_t> below_b = triangles_below(*q.snch_b, ib);
+          if (below_a.size() * below_b.size() <= 256) {
+            double least = std::numeric_limits<double>::infinity();
+            for (std::uint32_t ta : below_a)
+              for (std::uint32_t tb : below_b)
+                least = std::min(least, geometry::triangle_distance(q.mesh_a->triangle(ta),
+                                                                    detail::moved(q.mesh_b->triangle(tb),
+                                                                                  frames.b_to_a))
+                                            .distance);
+            const double bound = detail::node_pair_distance_bound(q, frames, ia, ib);
+            ASSERT_LE(bound, least + 1e-15 * size) << pair.name << " gap " << gap << " nodes " << ia << ", " << ib;
+            ++checked;
+            tight += bound > 0.9 * least ? 1 : 0;
+          }
+          const SnchNode &na = q.snch_a->node(ia), &nb = q.snch_b->node(ib);
+          if (na.is_leaf() && nb.is_leaf()) break;
+          // The two child pairs; the closer by the bound, four times in five.
+          std::uint32_t next[2][2];
+          int n = 0;
+          detail::for_child_pairs(*q.snch_a, *q.snch_b, ia, ib, [&](std::uint32_t a, std::uint32_t b) {
+            next[n][0] = a, next[n][1] = b, ++n;
+          });
+          const bool first_closer = detail::node_pair_distance_bound(q, frames, next[0][0], next[0][1]) <=
+                                    detail::node_pair_distance_bound(q, frames, next[1][0], next[1][1]);
+          const int pick = (unit(rng) < 0.8) == first_closer ? 0 : 1;
+          ia = next[pick][0], ib = next[pick][1];
+        }
+      }
+    }
+    EXPECT_GT(checked, 100) << pair.name;
+    // Tight enough somewhere that a bound a tenth too high would show.
+    EXPECT_GT(tight, 10) << pair.name;
   }
 }
 

@@ -280,11 +280,13 @@ void global_search_original(const PairQuery& q, std::vector<LmdPair>& out, Globa
 namespace {
 
 // Branch and bound for the closest pair below `bound`, best first: node
-// pairs come off a heap by the lower bound their spheres give, so the first
-// leaves reached are near the answer and the bound tightens early; the search
-// ends when the nearest pair left cannot beat the best found. At leaves the
-// plane bound of the precise search skips most exact distances. With
-// `first_below` it returns as soon as any pair is closer than the bound.
+// pairs come off a heap by the lower bound their spheres and boxes give
+// (node_pair_distance_bound), so the first leaves reached are near the
+// answer and the bound tightens early; the search ends when the nearest pair
+// left cannot beat the best found. At leaves the plane bound of the precise
+// search skips most exact distances, and the rest are cut short past the
+// best so far. With `first_below` it returns as soon as any pair is closer
+// than the bound.
 double closest_pair(const PairQuery& q, double bound, bool first_below, std::uint32_t* tri_a,
                     std::uint32_t* tri_b) {
   const Frames frames(q);
@@ -296,7 +298,7 @@ double closest_pair(const PairQuery& q, double bound, bool first_below, std::uin
   // Keyed by the lower bound: no pair below these nodes is closer.
   std::vector<detail::RankedNodePair> heap;
   heap.reserve(1024);
-  heap.push_back({detail::node_pair_lower_bound(q, frames, 0u, 0u), 0u, 0u});
+  heap.push_back({detail::node_pair_distance_bound(q, frames, 0u, 0u), 0u, 0u});
   while (!heap.empty()) {
     std::pop_heap(heap.begin(), heap.end());
     const detail::RankedNodePair item = heap.back();
@@ -322,7 +324,7 @@ double closest_pair(const PairQuery& q, double bound, bool first_below, std::uin
       continue;
     }
     detail::for_child_pairs(ta, tb, item.a, item.b, [&](std::uint32_t ia, std::uint32_t ib) {
-      const double lower = detail::node_pair_lower_bound(q, frames, ia, ib);
+      const double lower = detail::node_pair_distance_bound(q, frames, ia, ib);
       if (lower > limit) return;
       heap.push_back({lower, ia, ib});
       std::push_heap(heap.begin(), heap.end());
