@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <tuple>
 
 namespace prox {
@@ -22,6 +23,8 @@ std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser: spreads pair keys
 
 // A walk gives up after this many moves; real walks take a handful.
 constexpr int kMaxSteps = 256;
+
+constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
@@ -66,23 +69,39 @@ void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalT
   const double tolerance = 1e-12 * size;
 
   // The cache entry of a triangle pair, computed on first use. Returns an
-  // index: entries_ may grow while a walk holds it.
-  auto evaluate = [&](std::uint32_t ta, std::uint32_t tb, std::uint32_t owner) -> std::uint32_t {
+  // index: entries_ may grow while a walk holds it. With a `limit`, a pair
+  // farther than it is left partial (its distance only known to be past
+  // the limit), found as soon as that is certain; it is measured again if
+  // a later look needs more of it.
+  auto measure = [&](Entry& e, std::uint32_t ta, std::uint32_t tb, double limit) {
+    const Triangle a = ma.triangle(ta);
+    const Triangle b = mb.triangle(tb);
+    const Triangle moved_b{{b_to_a.apply(b.v[0]), b_to_a.apply(b.v[1]), b_to_a.apply(b.v[2])}};
+    ++stats.distance_evaluations;
+    if (original_) {
+      e.result = geometry::sampled_triangle_distance(a, moved_b);
+      return;
+    }
+    e.partial = !geometry::triangle_distance_within(a, moved_b, limit, e.result);
+    if (e.partial) e.result.distance = limit;
+  };
+  auto evaluate = [&](std::uint32_t ta, std::uint32_t tb, std::uint32_t owner,
+                      double limit = kNoLimit) -> std::uint32_t {
     const std::uint64_t key = pair_key(ta, tb);
     const std::uint32_t hit = original_ ? kMissing : find(key);
     if (hit != kMissing) {
-      ++stats.cache_hits;
+      Entry& cached = entries_[hit];
+      if (cached.partial && limit > cached.result.distance) {
+        measure(cached, ta, tb, limit);
+      } else {
+        ++stats.cache_hits;
+      }
       return hit;
     }
-    const Triangle b = mb.triangle(tb);
     Entry e;
     e.key = key;
     e.owner = owner;
-    const Triangle a = ma.triangle(ta);
-    const Triangle moved_b{{b_to_a.apply(b.v[0]), b_to_a.apply(b.v[1]), b_to_a.apply(b.v[2])}};
-    e.result =
-        original_ ? geometry::sampled_triangle_distance(a, moved_b) : geometry::triangle_distance(a, moved_b);
-    ++stats.distance_evaluations;
+    measure(e, ta, tb, limit);
     const auto index = static_cast<std::uint32_t>(entries_.size());
     entries_.push_back(e);
     if (original_) return index;  // no cache: nothing is looked up again
@@ -165,7 +184,12 @@ void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalT
             ++stats.plane_skips;
             continue;
           }
-          const std::uint32_t e = evaluate(na, nb, k);
+          // Only a pair closer than the best by the tolerance is of use
+          // here (or one that intersects: a limit of at least 0 keeps it).
+          // Not in the reduction (`known`), whose many walks cross: a pair
+          // left partial for one would be measured again for another.
+          const std::uint32_t e = evaluate(na, nb, k, known ? kNoLimit : std::max(best_distance - tolerance, 0.0));
+          if (entries_[e].partial) continue;
           const geometry::TriangleDistance& r = entries_[e].result;
           if (r.intersects || r.distance < best_distance - tolerance) {
             best = e, best_a = na, best_b = nb;

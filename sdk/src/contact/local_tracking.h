@@ -68,6 +68,9 @@ class LocalTracker {
     std::uint64_t key = 0;
     std::uint32_t owner = 0;  // the LMD whose walk computed it
     bool visited = false;     // the owner's walk stood on this pair
+    // Only known to be farther than result.distance (a neighbour measured
+    // against a walk's limit); the rest of `result` is not there yet.
+    bool partial = false;
     geometry::TriangleDistance result;
   };
   // Index of the entry for `key`, or kMissing.
