@@ -34,6 +34,22 @@ std::vector<Pair> pairs() {
   };
 }
 
+// The triangles below node i, in the tree's order.
+std::vector<std::uint32_t> triangles_below(const Snch& snch, std::uint32_t i) {
+  std::vector<std::uint32_t> out, stack{i};
+  while (!stack.empty()) {
+    const SnchNode& n = snch.node(stack.back());
+    stack.pop_back();
+    if (n.is_leaf()) {
+      out.push_back(n.first);
+    } else {
+      stack.push_back(n.second);
+      stack.push_back(n.first);
+    }
+  }
+  return out;
+}
+
 // The minimum distance is the smallest LMD distance; the reference finds
 // every LMD within the cutoff with the same exact kernel, so the two agree
 // up to the rounding between tied triangle pairs (1e-18 of the size).
@@ -71,24 +87,10 @@ TEST(Snch, BoxesHoldTheirTriangles) {
     ASSERT_TRUE(pair.a) << pair.name;
     const Snch& snch = *pair.a->snch;
     const Mesh& mesh = pair.a->mesh;
-    std::vector<std::uint32_t> stack{0u};
-    std::vector<std::uint32_t> below;
     std::size_t checked = 0;
     for (std::uint32_t i = 0; i < snch.nodes().size(); i += 7) {  // a sample of nodes, leaves and inner
-      below.clear();
-      stack.assign(1, i);
-      while (!stack.empty()) {
-        const SnchNode& n = snch.node(stack.back());
-        stack.pop_back();
-        if (n.is_leaf()) {
-          below.push_back(n.first);
-        } else {
-          stack.push_back(n.first);
-          stack.push_back(n.second);
-        }
-      }
       const SnchBox& box = snch.box(i);
-      for (std::uint32_t t : below)
+      for (std::uint32_t t : triangles_below(snch, i))
         for (const Vec3& v : mesh.triangle(t).v) {
           const Vec3 off = glm::abs(v - box.center);
           ASSERT_TRUE(off.x <= box.half.x && off.y <= box.half.y && off.z <= box.half.z)
@@ -98,22 +100,6 @@ TEST(Snch, BoxesHoldTheirTriangles) {
     }
     EXPECT_GT(checked, 0u) << pair.name;
   }
-}
-
-// The triangles below node i, in the tree's order.
-std::vector<std::uint32_t> triangles_below(const Snch& snch, std::uint32_t i) {
-  std::vector<std::uint32_t> out, stack{i};
-  while (!stack.empty()) {
-    const SnchNode& n = snch.node(stack.back());
-    stack.pop_back();
-    if (n.is_leaf()) {
-      out.push_back(n.first);
-    } else {
-      stack.push_back(n.second);
-      stack.push_back(n.first);
-    }
-  }
-  return out;
 }
 
 // The closest-pair search's bound on a node pair (spheres, and A's box
