@@ -324,11 +324,11 @@ double least_d2(const CandidateList& cand) {
 }
 
 // The result from the candidates of separate triangles (in local
-// coordinates, `origin` added back).
-TriangleDistance closest_result(const CandidateList& cand, const Triangle& a, const Triangle& b,
-                                const Vec3& origin, double size_a, double size_b, double tie_slack) {
-  const double min_d2 = least_d2(cand);
-  const double min_d = std::sqrt(min_d2);
+// coordinates, `origin` added back), the least of their squared distances
+// `min_d2` (least_d2) and its root `min_d` found by the caller.
+TriangleDistance closest_result(const CandidateList& cand, double min_d2, double min_d, const Triangle& a,
+                                const Triangle& b, const Vec3& origin, double size_a, double size_b,
+                                double tie_slack) {
 
   // Every candidate within the tie tolerance of the minimum is a closest pair
   // (up to rounding); together they span the closest set.
@@ -400,11 +400,12 @@ bool distance_of(const Triangle& a_world, const Triangle& b_world, const Want& w
   CandidateList cand;
   auto closest = [&] {
     const double min_d2 = least_d2(cand);
-    if (std::sqrt(min_d2) > want.limit) return false;
+    const double min_d = std::sqrt(min_d2);
+    if (min_d > want.limit) return false;
     if constexpr (kDetails) {
-      out = closest_result(cand, a, b, origin, size_a, size_b, tie_slack);
+      out = closest_result(cand, min_d2, min_d, a, b, origin, size_a, size_b, tie_slack);
     } else {
-      out.distance = std::sqrt(min_d2);
+      out.distance = min_d;
       out.intersects = false;
     }
     return true;
