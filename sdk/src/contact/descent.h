@@ -264,15 +264,21 @@ void descend(const PairQuery& q, const Frames& frames, bool use_cones, GlobalSea
   descend(q, frames, use_cones, false, stats, leaf);
 }
 
+// The gap between the bounding spheres of node `ia` of A and node `ib` of
+// B (negative where they overlap): a lower bound on their triangles' distance.
+inline double sphere_gap(const PairQuery& q, const Frames& frames, std::uint32_t ia, std::uint32_t ib) {
+  const SnchNode &na = q.snch_a->node(ia), &nb = q.snch_b->node(ib);
+  return glm::length(frames.b_to_a.apply(nb.center) - na.center) - na.radius - nb.radius;
+}
+
 // A lower bound on the distance between the triangles below node `ia` of A
 // and node `ib` of B: the better of the spheres' and the boxes' bounds. The
 // patches rank a cut's leaf pairs by it (first_leaf_pair).
 inline double node_pair_lower_bound(const PairQuery& q, const Frames& frames, std::uint32_t ia,
                                     std::uint32_t ib) {
-  const SnchNode &na = q.snch_a->node(ia), &nb = q.snch_b->node(ib);
-  const double spheres = glm::length(frames.b_to_a.apply(nb.center) - na.center) - na.radius - nb.radius;
   const SnchBox &ba = q.snch_a->box(ia), &bb = q.snch_b->box(ib);
-  return std::max(spheres, box_lower_bound(frames.axes, ba, bb, frames.b_to_a.apply(bb.center) - ba.center));
+  return std::max(sphere_gap(q, frames, ia, ib),
+                  box_lower_bound(frames.axes, ba, bb, frames.b_to_a.apply(bb.center) - ba.center));
 }
 
 // A lower bound on the distance between the triangles below node `ia` of A
@@ -285,8 +291,6 @@ inline double node_pair_lower_bound(const PairQuery& q, const Frames& frames, st
 // time, docs/benchmarks.md).
 inline double node_pair_distance_bound(const PairQuery& q, const Frames& frames, std::uint32_t ia,
                                        std::uint32_t ib) {
-  const SnchNode &na = q.snch_a->node(ia), &nb = q.snch_b->node(ib);
-  const double spheres = glm::length(frames.b_to_a.apply(nb.center) - na.center) - na.radius - nb.radius;
   const SnchBox &ba = q.snch_a->box(ia), &bb = q.snch_b->box(ib);
   const Vec3 t = frames.b_to_a.apply(bb.center) - ba.center;
   double gaps2 = 0.0;
@@ -294,7 +298,7 @@ inline double node_pair_distance_bound(const PairQuery& q, const Frames& frames,
     const double gap = std::abs(t[k]) - ba.half[k] - glm::dot(bb.half, frames.axes.axis[k].wb);
     if (gap > 0.0) gaps2 += gap * gap;
   }
-  return std::max(spheres, std::sqrt(gaps2) - box_slack(ba, bb, t));
+  return std::max(sphere_gap(q, frames, ia, ib), std::sqrt(gaps2) - box_slack(ba, bb, t));
 }
 
 // A node pair in a best-first search's heap, smallest key on top.
