@@ -81,6 +81,67 @@ TEST(MinimumDistance, MatchesTheReferenceOnCadPartsAndTheBunny) {
   }
 }
 
+// The least exact distance over every pair of triangles, each pair skipped
+// only where the spheres around the two triangles (about their first
+// vertex, a little enlarged for rounding) are farther apart than the least
+// so far: the brute-force answer, without the trees.
+double least_over_every_triangle_pair(const Mesh& a, const Mesh& b, const Pose& b_to_a) {
+  struct Ball {
+    Vec3 c;
+    double r;
+  };
+  auto balls = [](const Mesh& m, const Pose& pose) {
+    std::vector<Ball> out;
+    for (std::uint32_t t = 0; t < m.triangle_count(); ++t) {
+      const Triangle tri = detail::moved(m.triangle(t), pose);
+      const double r = std::max(glm::length(tri.v[1] - tri.v[0]), glm::length(tri.v[2] - tri.v[0]));
+      out.push_back({tri.v[0], r * (1.0 + 1e-12)});
+    }
+    return out;
+  };
+  const std::vector<Ball> ba = balls(a, Pose{}), bb = balls(b, b_to_a);
+  double least = std::numeric_limits<double>::infinity();
+  for (std::uint32_t i = 0; i < ba.size(); ++i)
+    for (std::uint32_t j = 0; j < bb.size(); ++j) {
+      const double reach = ba[i].r + bb[j].r + least;
+      const Vec3 d = bb[j].c - ba[i].c;
+      if (glm::dot(d, d) > reach * reach * (1.0 + 1e-12)) continue;
+      least = std::min(least, geometry::triangle_distance(a.triangle(i), detail::moved(b.triangle(j), b_to_a)).distance);
+    }
+  return least;
+}
+
+// Far from contact, where thousands of node pairs are nearer than the answer
+// and the search turns from best first to depth first, the answer is still
+// the least over every triangle pair, Suzanne against the Duck turned every
+// which way, from a hundredth to half their size apart.
+TEST(MinimumDistance, FarFromContactItIsTheLeastOverEveryTrianglePair) {
+  const auto a = load_gltf_model("gltf/Suzanne/Suzanne.gltf");
+  const auto b = load_gltf_model("gltf/Duck.glb");
+  ASSERT_TRUE(a && b);
+  const double size = std::max(a->size, b->size);
+  std::mt19937_64 rng(17);
+  int checked = 0;
+  for (const double gap : {0.01, 0.05, 0.2, 0.5}) {
+    for (int i = 0; i < sampled_poses(3); ++i) {
+      const Pose pose = pose_at_gap(*a, *b, gap * size, rng);
+      const PairQuery q = make_query(*a, Pose{}, *b, pose, 0.0);
+      const double expected = least_over_every_triangle_pair(a->mesh, b->mesh, detail::Frames(q).b_to_a);
+      ASSERT_GT(expected, 0.5 * gap * size) << "gap " << gap << " pose " << i;
+      const double tolerance = 1e-15 * size;
+      EXPECT_NEAR(minimum_distance(q, std::numeric_limits<double>::infinity()), expected, tolerance)
+          << "gap " << gap << " pose " << i;
+      EXPECT_NEAR(minimum_distance(q, 1.001 * expected), expected, tolerance) << "gap " << gap << " pose " << i;
+      EXPECT_EQ(minimum_distance(q, 0.999 * expected), std::numeric_limits<double>::infinity())
+          << "gap " << gap << " pose " << i;
+      EXPECT_TRUE(any_closer_than(q, 1.001 * expected)) << "gap " << gap << " pose " << i;
+      EXPECT_FALSE(any_closer_than(q, 0.999 * expected)) << "gap " << gap << " pose " << i;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 4);
+}
+
 // Every node's box holds the vertices of every triangle below it.
 TEST(Snch, BoxesHoldTheirTriangles) {
   for (const Pair& pair : pairs()) {
@@ -134,6 +195,12 @@ TEST(MinimumDistance, TheNodePairBoundIsNeverAboveTheTrianglesBelowIt) {
                                             .distance);
             const double bound = detail::node_pair_distance_bound(q, frames, ia, ib);
             ASSERT_LE(bound, least + 1e-15 * size) << pair.name << " gap " << gap << " nodes " << ia << ", " << ib;
+            // With a limit: the same bound up to it, and past it something
+            // past it (the search drops the pair either way).
+            ASSERT_EQ(detail::node_pair_distance_bound(q, frames, ia, ib, bound), bound) << pair.name;
+            if (bound > 0.0) {
+              ASSERT_GT(detail::node_pair_distance_bound(q, frames, ia, ib, 0.5 * bound), 0.5 * bound) << pair.name;
+            }
             ++checked;
             tight += bound > 0.9 * least ? 1 : 0;
           }

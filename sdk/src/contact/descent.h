@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -289,8 +290,11 @@ inline double node_pair_lower_bound(const PairQuery& q, const Frames& frames, st
 // the CAD scenes it costs less and bounds more tightly than that (the
 // closest-pair search far from contact on path T: 5.1 -> 2.2 times FCL's
 // time, docs/benchmarks.md).
+// Past `limit` it may return the boxes' bound alone (still past the limit):
+// the spheres' is not computed for a pair the boxes already reject.
 inline double node_pair_distance_bound(const PairQuery& q, const Frames& frames, std::uint32_t ia,
-                                       std::uint32_t ib) {
+                                       std::uint32_t ib,
+                                       double limit = std::numeric_limits<double>::infinity()) {
   const SnchBox &ba = q.snch_a->box(ia), &bb = q.snch_b->box(ib);
   const Vec3 t = frames.b_to_a.apply(bb.center) - ba.center;
   double gaps2 = 0.0;
@@ -298,7 +302,9 @@ inline double node_pair_distance_bound(const PairQuery& q, const Frames& frames,
     const double gap = std::abs(t[k]) - ba.half[k] - glm::dot(bb.half, frames.axes.axis[k].wb);
     if (gap > 0.0) gaps2 += gap * gap;
   }
-  return std::max(sphere_gap(q, frames, ia, ib), std::sqrt(gaps2) - box_slack(ba, bb, t));
+  const double boxes = std::sqrt(gaps2) - box_slack(ba, bb, t);
+  if (boxes > limit) return boxes;
+  return std::max(sphere_gap(q, frames, ia, ib), boxes);
 }
 
 // A node pair in a best-first search's heap, smallest key on top.
