@@ -289,7 +289,7 @@ inline double node_pair_lower_bound(const PairQuery& q, const Frames& frames, st
 // box_lower_bound takes the largest gap along fifteen). On paths T and R and
 // the CAD scenes it costs less and bounds more tightly than that (the
 // closest-pair search far from contact on path T: 5.1 -> 2.2 times FCL's
-// time, docs/benchmarks.md).
+// time, docs/benchmarks-changes.md).
 // Past `limit` it may return the boxes' bound alone (still past the limit):
 // the spheres' is not computed for a pair the boxes already reject.
 inline double node_pair_distance_bound(const PairQuery& q, const Frames& frames, std::uint32_t ia,

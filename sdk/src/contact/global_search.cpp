@@ -285,14 +285,16 @@ namespace {
 // the best found is dropped. Best first (a heap) until the first pair of
 // leaves, which is then near the answer, so the bound is tight from the
 // start; then depth first, the nearer child pair first, and the heap's
-// pairs, nearest first, whenever a dive has run out. Best first all the way visits about a tenth fewer node pairs, but far
-// from contact, where thousands of them are below the answer, its heap's
-// sifts were a third of its time; depth first from the roots, with no bound
-// yet, dives into the wrong half where the boxes are loose (a turned mesh:
-// path R near contact took 2.5 times as long). The measurements are in
-// docs/benchmarks.md. At leaves the plane bound of the precise search skips
-// most exact distances, and the rest are cut short past the best so far.
-// With `first_below` it returns as soon as any pair is closer than the bound.
+// pairs, nearest first, whenever a dive has run out. Best first all the way
+// visits about a tenth fewer node pairs, but far from contact, where
+// thousands of them are below the answer, its heap's sifts were a third of
+// its time; depth first from the roots, with no bound yet, dives into the
+// wrong half where the boxes are loose (a turned mesh: path R near contact
+// took 2.5 times as long). The measurements are in
+// docs/benchmarks-changes.md. At leaves the plane bound of the precise
+// search skips most exact distances, and the rest are cut short past the
+// best so far. With `first_below` it returns as soon as any pair is closer
+// than the bound.
 double closest_pair(const PairQuery& q, double bound, bool first_below, std::uint32_t* tri_a,
                     std::uint32_t* tri_b) {
   using detail::RankedNodePair;
