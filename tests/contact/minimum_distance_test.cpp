@@ -106,7 +106,8 @@ double least_over_every_triangle_pair(const Mesh& a, const Mesh& b, const Pose& 
       const double reach = ba[i].r + bb[j].r + least;
       const Vec3 d = bb[j].c - ba[i].c;
       if (glm::dot(d, d) > reach * reach * (1.0 + 1e-12)) continue;
-      least = std::min(least, geometry::triangle_distance(a.triangle(i), detail::moved(b.triangle(j), b_to_a)).distance);
+      const Triangle tb = detail::moved(b.triangle(j), b_to_a);
+      least = std::min(least, geometry::triangle_distance(a.triangle(i), tb).distance);
     }
   return least;
 }
