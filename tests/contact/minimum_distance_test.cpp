@@ -164,8 +164,37 @@ TEST(Snch, BoxesHoldTheirTriangles) {
   }
 }
 
-// The closest-pair search's bound on a node pair (spheres, and A's box
-// against the box along A's axes around B's) against brute force: never
+// Every node's slab along its cone's axis holds the vertices of every
+// triangle below it, on the long thin triangles of the CAD parts too.
+TEST(Snch, SlabsHoldTheirTriangles) {
+  for (const Pair& pair : pairs()) {
+    ASSERT_TRUE(pair.a) << pair.name;
+    const Snch& snch = *pair.a->snch;
+    const Mesh& mesh = pair.a->mesh;
+    ASSERT_TRUE(snch.has_slabs()) << pair.name;
+    const double eps = 1e-12 * pair.a->size;
+    std::size_t checked = 0, thin = 0;
+    for (std::uint32_t i = 0; i < snch.nodes().size(); i += 7) {
+      const SnchNode& n = snch.node(i);
+      const SnchSlab& slab = snch.slab(i);
+      for (std::uint32_t t : triangles_below(snch, i))
+        for (const Vec3& v : mesh.triangle(t).v) {
+          const double along = glm::dot(v - n.center, n.cone.axis);
+          ASSERT_TRUE(along >= slab.lo - eps && along <= slab.hi + eps) << pair.name << " node " << i;
+        }
+      ++checked;
+      thin += slab.hi - slab.lo < 0.5 * n.radius ? 1 : 0;
+    }
+    EXPECT_GT(checked, 0u) << pair.name;
+    // Thinner than the spheres at a tenth of the nodes at least (about a
+    // fifth on the engine's cylinder block), or they would bound nothing the
+    // spheres do not.
+    EXPECT_GT(thin, checked / 10) << pair.name << ": " << thin << " of " << checked;
+  }
+}
+
+// The closest-pair search's bound on a node pair (spheres, A's box
+// against the box along A's axes around B's, and the slabs) against brute force: never
 // above the least exact distance between the triangles below the two
 // nodes. Node pairs are taken on dives from the roots towards the closer
 // children (mostly), where the bounds are tightest, at poses from touching

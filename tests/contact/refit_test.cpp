@@ -74,6 +74,35 @@ void triangles_below(const Snch& snch, std::uint32_t i, std::vector<std::uint32_
 // A cone's half-angle from the cosine and sine the node keeps.
 double half_angle(const CosCone& c) { return std::atan2(c.sin, c.cos); }
 
+// Node i's slab against the vertices of `below`, its triangles: each failure
+// reported, and counted.
+int slab_failures(const Mesh& mesh, const Snch& snch, std::uint32_t i, const std::vector<std::uint32_t>& below,
+                  double eps) {
+  const SnchNode& n = snch.node(i);
+  const SnchSlab& slab = snch.slab(i);
+  int failures = 0;
+  for (const std::uint32_t t : below)
+    for (const Vec3& v : mesh.triangle(t).v) {
+      const double along = glm::dot(v - n.center, n.cone.axis);
+      if (along < slab.lo - eps || along > slab.hi + eps)
+        ++failures, ADD_FAILURE() << "node " << i << " slab misses triangle " << t;
+    }
+  return failures;
+}
+
+// A built tree's slabs along its cones' axes hold every vertex below them.
+void expect_slabs_hold(const Mesh& mesh, const Snch& snch) {
+  ASSERT_TRUE(snch.has_slabs());
+  const double eps = 1e-12 * mesh.longest_edge();
+  int failures = 0;
+  std::vector<std::uint32_t> below;
+  for (std::uint32_t i = 0; i < snch.nodes().size() && failures < 5; ++i) {
+    below.clear();
+    triangles_below(snch, i, below);
+    failures += slab_failures(mesh, snch, i, below, eps);
+  }
+}
+
 void expect_bounds_hold(const Mesh& mesh, const Snch& snch) {
   const double eps = 1e-12 * mesh.longest_edge();
   int failures = 0;
@@ -85,6 +114,9 @@ void expect_bounds_hold(const Mesh& mesh, const Snch& snch) {
       const Vec3 d = glm::abs(p - b.center);
       return d.x + r <= b.half.x + eps && d.y + r <= b.half.y + eps && d.z + r <= b.half.z + eps;
     };
+    below.clear();
+    triangles_below(snch, i, below);
+    if (snch.has_slabs()) failures += slab_failures(mesh, snch, i, below, eps);
     if (n.is_leaf()) {
       for (const Vec3& v : mesh.triangle(n.first).v) {
         if (glm::length(v - n.center) > n.radius + eps) ++failures, ADD_FAILURE() << "leaf " << i << " sphere";
@@ -99,8 +131,6 @@ void expect_bounds_hold(const Mesh& mesh, const Snch& snch) {
         }
       continue;
     }
-    below.clear();
-    triangles_below(snch, i, below);
     for (const std::uint32_t t : below)
       for (const Vec3& v : mesh.triangle(t).v) {
         if (glm::length(v - n.center) > n.radius + eps)
@@ -150,7 +180,12 @@ TEST(Refit, BoundsHoldAndTheSearchIsTheFreshTreesAndTheReferences) {
   // moving bunny is the deformed one, against an undeformed one.
   for (int k = 0; k < 4; ++k) {
     const Deformed d = deform(*model, waved(model->mesh, 0.005, 0.08, 0.5 * kPi * k));
+    // A refitted tree drops the slabs its build measured; a rebuilt one has
+    // them again, and they hold the moved triangles.
+    EXPECT_FALSE(d.refitted.snch->has_slabs());
+    EXPECT_TRUE(d.rebuilt.snch->has_slabs());
     expect_bounds_hold(d.refitted.mesh, *d.refitted.snch);
+    expect_slabs_hold(d.rebuilt.mesh, *d.rebuilt.snch);
     EXPECT_LT(d.refitted.snch->stats().degradation, Snch::kRebuildDegradation) << "a bend is refitted";
     for (int i = 0; i < sampled_poses(16); ++i) {
       const Pose pose = pose_at_gap(*model, d.rebuilt, std::exp(log_gap(rng)), rng);

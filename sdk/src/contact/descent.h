@@ -54,7 +54,11 @@ struct BoxAxes {
 struct Frames {
   Pose b_to_a;
   BoxAxes axes;
-  explicit Frames(const PairQuery& q) : b_to_a(q.pose_a.inverse() * q.pose_b), axes(b_to_a.rotation) {}
+  bool slabs;  // both trees have their slabs (a refitted one has none)
+  explicit Frames(const PairQuery& q)
+      : b_to_a(q.pose_a.inverse() * q.pose_b),
+        axes(b_to_a.rotation),
+        slabs(q.snch_a->has_slabs() && q.snch_b->has_slabs()) {}
 };
 
 // Rounding in the projections, bounded generously: a box test never rejects
@@ -154,6 +158,30 @@ inline bool g3_rejects(const NodePair& p) {
   return misses(p.a, dir, p.a.cone.axis, p.two_sided_a) || misses(p.b, -dir, p.axis_b, p.two_sided_b);
 }
 
+// The gap between the slabs of node `ia` of A and node `ib` of B (SnchSlab),
+// each along its own axis: along A's axis A spans its slab and B at most its
+// slab turned onto that axis plus its sphere's reach across its own (and
+// likewise along B's). A lower bound on their triangles' distance, less
+// the rounding; may be negative. `d` is B's sphere centre less A's, in A's
+// frame. Two nearly flat patches facing each other, however turned, bound
+// almost exactly.
+inline double slab_gap(const PairQuery& q, const Frames& frames, std::uint32_t ia, std::uint32_t ib,
+                       const Vec3& d) {
+  const SnchNode &na = q.snch_a->node(ia), &nb = q.snch_b->node(ib);
+  const SnchSlab &sa = q.snch_a->slab(ia), &sb = q.snch_b->slab(ib);
+  const Vec3& ma = na.cone.axis;
+  const Vec3 mb = frames.b_to_a.rotate(nb.cone.axis);
+  const double k = glm::dot(ma, mb);
+  const double sin = glm::length(glm::cross(ma, mb)) + 1e-15;
+  const double along_a = glm::dot(d, ma), along_b = -glm::dot(d, mb);
+  const double b_lo = along_a + std::min(sb.lo * k, sb.hi * k) - nb.radius * sin;
+  const double b_hi = along_a + std::max(sb.lo * k, sb.hi * k) + nb.radius * sin;
+  const double a_lo = along_b + std::min(sa.lo * k, sa.hi * k) - na.radius * sin;
+  const double a_hi = along_b + std::max(sa.lo * k, sa.hi * k) + na.radius * sin;
+  const double gap = std::max(std::max(b_lo - sa.hi, sa.lo - b_hi), std::max(a_lo - sb.hi, sb.lo - a_hi));
+  return gap - 1e-12 * (std::abs(along_a) + std::abs(along_b) + na.radius + nb.radius);
+}
+
 // Which node of a pair the descents split: A's unless B's is the larger
 // (or A's is a leaf and B's is not).
 inline bool split_a(const SnchNode& na, const SnchNode& nb) {
@@ -193,6 +221,10 @@ inline Visited visit_node_pair(const PairQuery& q, const Frames& frames, bool us
   if (g1_rejects(p, q.cutoff) ||
       (use_boxes && boxes_farther_than(frames.axes, ta.box(ia), tb.box(ib),
                                        frames.b_to_a.apply(tb.box(ib).center) - ta.box(ia).center, q.cutoff))) {
+    ++stats.rejected_g1;
+    return Visited::Rejected;
+  }
+  if (use_boxes && frames.slabs && slab_gap(q, frames, ia, ib, p.center_b - na.center) > q.cutoff) {
     ++stats.rejected_g1;
     return Visited::Rejected;
   }
@@ -304,7 +336,11 @@ inline double node_pair_distance_bound(const PairQuery& q, const Frames& frames,
   }
   const double boxes = std::sqrt(gaps2) - box_slack(ba, bb, t);
   if (boxes > limit) return boxes;
-  return std::max(sphere_gap(q, frames, ia, ib), boxes);
+  const SnchNode &na = q.snch_a->node(ia), &nb = q.snch_b->node(ib);
+  const Vec3 d = frames.b_to_a.apply(nb.center) - na.center;
+  const double spheres = glm::length(d) - na.radius - nb.radius;
+  const double bound = std::max(spheres, boxes);
+  return frames.slabs ? std::max(bound, slab_gap(q, frames, ia, ib, d)) : bound;
 }
 
 // A node pair in a best-first search's heap, smallest key on top.

@@ -51,6 +51,13 @@ SnchBox box_between(const Vec3& lo, const Vec3& hi) {
   return b;
 }
 
+// A slab holding [lo, hi], widened for the rounding of the products that
+// gave them (`scale`: the size of the terms they were summed from).
+SnchSlab slab_between(double lo, double hi, double scale) {
+  const double slack = 1e-12 * (scale + std::abs(lo) + std::abs(hi));
+  return {lo - slack, hi + slack};
+}
+
 Sphere merge(const Sphere& a, const Sphere& b) {
   const Vec3 d = b.center - a.center;
   const double dist = glm::length(d);
@@ -127,6 +134,7 @@ Snch::Snch(const Mesh& mesh) {
   std::iota(order.begin(), order.end(), 0u);
   nodes_.reserve(n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0);
   boxes_.resize(n > 0 ? 2 * static_cast<std::size_t>(n) - 1 : 0);
+  slabs_.resize(boxes_.size());
 
   struct Task {
     std::uint32_t node, begin, end, depth;
@@ -214,10 +222,22 @@ Snch::Snch(const Mesh& mesh) {
     cones[i] = merge(cones[node.first], cones[node.second]);
   }
   for (std::size_t i = 0; i < nodes_.size(); ++i) nodes_[i].cone = CosCone::of(cones[i]);
+  // Each node's slab along its cone's axis, measured on its vertices.
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    const SnchNode& node = nodes_[i];
+    double lo = INFINITY, hi = -INFINITY;
+    for (std::uint32_t k = range[i].first; k < range[i].second; ++k)
+      for (std::uint32_t v : mesh.indices(order[k])) {
+        const double d = glm::dot(mesh.vertex(v) - node.center, node.cone.axis);
+        lo = std::min(lo, d), hi = std::max(hi, d);
+      }
+    slabs_[i] = slab_between(lo, hi, node.radius);
+  }
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) two_sided_ = two_sided_ || open_[v];
   compute_vertex_spread(mesh);
   stats_.nodes = static_cast<std::uint32_t>(nodes_.size());
   stats_.memory_bytes = nodes_.capacity() * sizeof(SnchNode) + boxes_.capacity() * sizeof(SnchBox) +
+                        slabs_.capacity() * sizeof(SnchSlab) +
                         vertex_spread_.capacity() * sizeof(geometry::Spread) + open_.capacity();
   plan_refit();
   // The ratio a refit of the unmoved mesh would measure, so that
@@ -226,6 +246,7 @@ Snch::Snch(const Mesh& mesh) {
     Snch copy;
     copy.nodes_ = nodes_;
     copy.boxes_ = boxes_;
+    copy.slabs_ = slabs_;
     copy.refit_tasks_ = refit_tasks_;
     copy.refit_top_ = refit_top_;
     built_ratio_ = copy.sweep(
@@ -378,6 +399,11 @@ void Snch::refit(const Mesh& mesh, WorkerPool* pool) {
         node.cone = refit_leaf_cone(mesh, node.first, cones);
       },
       pool);
+  // The slabs are measured on the triangles at a build; bounding them
+  // again from the children would cost a refit about a third more, so a
+  // refitted tree has none until it is rebuilt (the searches then bound
+  // node pairs by their spheres and boxes alone).
+  slabs_valid_ = false;
   stats_.refits += 1;
   stats_.degradation = ratio / built_ratio_;
   stats_.refit_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -38,6 +38,15 @@ struct SnchBox {
   Vec3 half{0.0};  // half extents, rounded outward
 };
 
+// How far a node's triangles reach along its cone's axis, from its sphere's
+// centre: every vertex v below the node has lo <= dot(v - center, axis) <=
+// hi. Where the triangles below are nearly flat, a thin slab, whatever the
+// pose: a bound between two nodes that faces each other as an oriented box
+// would, which the axis-aligned boxes cannot where a mesh is turned.
+struct SnchSlab {
+  double lo = 0.0, hi = 0.0;  // rounded outward
+};
+
 struct SnchStats {
   std::uint32_t nodes = 0;
   std::uint32_t leaves = 0;
@@ -67,7 +76,8 @@ class Snch {
 
   // Refits the tree to `mesh`, the mesh it was built for with its vertices
   // moved (same topology): every node's sphere, box and cone bottom-up from
-  // the triangles' new positions, keeping the tree's shape. Linear time; the
+  // the triangles' new positions, keeping the tree's shape; the slabs are
+  // dropped (has_slabs()) until the next build. Linear time; the
   // bounds stay conservative, only looser than a fresh build's
   // (stats().degradation says how much). With a pool, the vertices and the
   // subtrees are refitted on its threads; the tree is the same bit for bit.
@@ -84,6 +94,10 @@ class Snch {
   const SnchNode& node(std::uint32_t i) const { return nodes_[i]; }
   // The box of node i (same index as nodes()).
   const SnchBox& box(std::uint32_t i) const { return boxes_[i]; }
+  // The slab of node i along its cone's axis (same index as nodes()), when
+  // has_slabs(): a built tree has them, a refitted one not (refit()).
+  const SnchSlab& slab(std::uint32_t i) const { return slabs_[i]; }
+  bool has_slabs() const { return slabs_valid_; }
   const SnchStats& stats() const { return stats_; }
   // False for a closed, consistently wound surface, which has an inside: a
   // contact can only reach it from outside, along its normals. True for an
@@ -107,6 +121,8 @@ class Snch {
 
   std::vector<SnchNode> nodes_;
   std::vector<SnchBox> boxes_;
+  std::vector<SnchSlab> slabs_;
+  bool slabs_valid_ = true;
   std::vector<geometry::Spread> vertex_spread_;
   // By vertex: the surface around it is open or folded (topology alone, so
   // a refit keeps it).
