@@ -163,14 +163,12 @@ inline bool g3_rejects(const NodePair& p) {
 // slab turned onto that axis plus its sphere's reach across its own (and
 // likewise along B's). A lower bound on their triangles' distance, less
 // the rounding; may be negative. `d` is B's sphere centre less A's, in A's
-// frame. Two nearly flat patches facing each other, however turned, bound
-// almost exactly.
-inline double slab_gap(const PairQuery& q, const Frames& frames, std::uint32_t ia, std::uint32_t ib,
-                       const Vec3& d) {
+// frame, `mb` B's cone axis turned into A's frame. Two nearly flat patches
+// facing each other, however turned, bound almost exactly.
+inline double slab_gap(const PairQuery& q, std::uint32_t ia, std::uint32_t ib, const Vec3& d, const Vec3& mb) {
   const SnchNode &na = q.snch_a->node(ia), &nb = q.snch_b->node(ib);
   const SnchSlab &sa = q.snch_a->slab(ia), &sb = q.snch_b->slab(ib);
   const Vec3& ma = na.cone.axis;
-  const Vec3 mb = frames.b_to_a.rotate(nb.cone.axis);
   const double k = glm::dot(ma, mb);
   const double sin = glm::length(glm::cross(ma, mb)) + 1e-15;
   const double along_a = glm::dot(d, ma), along_b = -glm::dot(d, mb);
@@ -202,7 +200,7 @@ void for_child_pairs(const Snch& ta, const Snch& tb, std::uint32_t ia, std::uint
 }
 
 // What descend() makes of one node pair, counted in `stats`: rejected by
-// G1 (and the box test with `use_boxes`), G2 or G3 (with `use_cones`), or
+// G1 (and the box and slab tests with `use_boxes`), G2 or G3 (with `use_cones`), or
 // passed, as a pair of leaves or with inner nodes to split.
 enum class Visited { Rejected, Leaves, Inner };
 inline Visited visit_node_pair(const PairQuery& q, const Frames& frames, bool use_cones, bool use_boxes,
@@ -224,7 +222,7 @@ inline Visited visit_node_pair(const PairQuery& q, const Frames& frames, bool us
     ++stats.rejected_g1;
     return Visited::Rejected;
   }
-  if (use_boxes && frames.slabs && slab_gap(q, frames, ia, ib, p.center_b - na.center) > q.cutoff) {
+  if (use_boxes && frames.slabs && slab_gap(q, ia, ib, p.center_b - na.center, p.axis_b) > q.cutoff) {
     ++stats.rejected_g1;
     return Visited::Rejected;
   }
@@ -297,11 +295,15 @@ void descend(const PairQuery& q, const Frames& frames, bool use_cones, GlobalSea
   descend(q, frames, use_cones, false, stats, leaf);
 }
 
-// The gap between the bounding spheres of node `ia` of A and node `ib` of
-// B (negative where they overlap): a lower bound on their triangles' distance.
+// The gap between the bounding spheres of nodes `na` of A and `nb` of B,
+// `d` apart in A's frame (negative where they overlap): a lower bound on
+// their triangles' distance.
+inline double sphere_gap(const SnchNode& na, const SnchNode& nb, const Vec3& d) {
+  return glm::length(d) - na.radius - nb.radius;
+}
 inline double sphere_gap(const PairQuery& q, const Frames& frames, std::uint32_t ia, std::uint32_t ib) {
   const SnchNode &na = q.snch_a->node(ia), &nb = q.snch_b->node(ib);
-  return glm::length(frames.b_to_a.apply(nb.center) - na.center) - na.radius - nb.radius;
+  return sphere_gap(na, nb, frames.b_to_a.apply(nb.center) - na.center);
 }
 
 // A lower bound on the distance between the triangles below node `ia` of A
@@ -338,9 +340,9 @@ inline double node_pair_distance_bound(const PairQuery& q, const Frames& frames,
   if (boxes > limit) return boxes;
   const SnchNode &na = q.snch_a->node(ia), &nb = q.snch_b->node(ib);
   const Vec3 d = frames.b_to_a.apply(nb.center) - na.center;
-  const double spheres = glm::length(d) - na.radius - nb.radius;
-  const double bound = std::max(spheres, boxes);
-  return frames.slabs ? std::max(bound, slab_gap(q, frames, ia, ib, d)) : bound;
+  const double bound = std::max(sphere_gap(na, nb, d), boxes);
+  if (!frames.slabs) return bound;
+  return std::max(bound, slab_gap(q, ia, ib, d, frames.b_to_a.rotate(nb.cone.axis)));
 }
 
 // A node pair in a best-first search's heap, smallest key on top.

@@ -246,7 +246,6 @@ Snch::Snch(const Mesh& mesh) {
     Snch copy;
     copy.nodes_ = nodes_;
     copy.boxes_ = boxes_;
-    copy.slabs_ = slabs_;
     copy.refit_tasks_ = refit_tasks_;
     copy.refit_top_ = refit_top_;
     built_ratio_ = copy.sweep(
