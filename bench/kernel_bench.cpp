@@ -6,6 +6,7 @@
 #include "geometry/predicates.h"
 #include "geometry/triangle_distance.h"
 #include "geometry/triangle_intersection.h"
+#include "geometry/triangle_screen.h"
 #include "geometry/visibility.h"
 #include "runtime/haptic.h"
 #include "snch/snch.h"
@@ -14,6 +15,7 @@
 #include <benchmark/benchmark.h>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -44,16 +46,20 @@ std::vector<Pair> make_pairs(double gap, std::size_t count = 4096) {
   return pairs;
 }
 
+// `screen` 1: the kernel as the engine calls it; 0: without its
+// single-precision screen (the same answers), side by side.
 void BM_TriangleDistance(benchmark::State& state) {
   const std::vector<Pair> pairs = make_pairs(static_cast<double>(state.range(0)) / 100.0);
+  const bool screen = state.range(1) != 0;
   std::size_t i = 0;
   for (auto _ : state) {
     const Pair& p = pairs[i++ % pairs.size()];
-    benchmark::DoNotOptimize(geometry::triangle_distance(p.a, p.b));
+    benchmark::DoNotOptimize(screen ? geometry::triangle_distance(p.a, p.b)
+                                    : geometry::triangle_distance_unscreened(p.a, p.b));
   }
   state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_TriangleDistance)->Arg(0)->Arg(10)->Arg(100)->ArgName("gap_percent");
+BENCHMARK(BM_TriangleDistance)->ArgsProduct({{0, 10, 100}, {1, 0}})->ArgNames({"gap_percent", "screen"});
 
 // The distance alone (a branch and bound's leaf), with no limit, and the
 // full answer within a limit that about half the pairs are past (their
@@ -63,11 +69,12 @@ void BM_TriangleDistanceValue(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     const Pair& p = pairs[i++ % pairs.size()];
-    benchmark::DoNotOptimize(geometry::triangle_distance_value(p.a, p.b));
+    benchmark::DoNotOptimize(state.range(0) != 0 ? geometry::triangle_distance_value(p.a, p.b)
+                                                 : geometry::triangle_distance_value_unscreened(p.a, p.b));
   }
   state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_TriangleDistanceValue);
+BENCHMARK(BM_TriangleDistanceValue)->Arg(1)->Arg(0)->ArgName("screen");
 
 void BM_TriangleDistanceWithin(benchmark::State& state) {
   const std::vector<Pair> pairs = make_pairs(0.1);
@@ -75,13 +82,48 @@ void BM_TriangleDistanceWithin(benchmark::State& state) {
   for (auto _ : state) {
     const Pair& p = pairs[i++ % pairs.size()];
     geometry::TriangleDistance d;
-    within += geometry::triangle_distance_within(p.a, p.b, 0.43, d) ? 1 : 0;
+    const bool in = state.range(0) != 0 ? geometry::triangle_distance_within(p.a, p.b, 0.43, d)
+                                        : geometry::triangle_distance_within_unscreened(p.a, p.b, 0.43, d);
+    within += in ? 1 : 0;
     benchmark::DoNotOptimize(d);
   }
   state.SetItemsProcessed(state.iterations());
   state.counters["within"] = static_cast<double>(within) / static_cast<double>(i);
 }
-BENCHMARK(BM_TriangleDistanceWithin);
+BENCHMARK(BM_TriangleDistanceWithin)->Arg(1)->Arg(0)->ArgName("screen");
+
+// The single-precision screen alone (the float path before any exact
+// candidate), on the pairs above in the local coordinates the kernel gives
+// it, against a limit half of them are past.
+void BM_ScreenPair(benchmark::State& state) {
+  struct Local {
+    Triangle a, b;
+    double span;
+  };
+  std::vector<Local> pairs;
+  for (const Pair& p : make_pairs(0.1)) {
+    Vec3 lo = p.a.v[0], hi = p.a.v[0];
+    for (const Triangle* t : {&p.a, &p.b})
+      for (const Vec3& v : t->v) lo = glm::min(lo, v), hi = glm::max(hi, v);
+    const Vec3 origin = 0.5 * lo + 0.5 * hi;
+    Local l{};
+    for (int k = 0; k < 3; ++k) {
+      l.a.v[k] = p.a.v[k] - origin, l.b.v[k] = p.b.v[k] - origin;
+      l.span = std::max({l.span, glm::length(l.a.v[k]), glm::length(l.b.v[k])});
+    }
+    pairs.push_back(l);
+  }
+  std::size_t i = 0, settled = 0;
+  for (auto _ : state) {
+    const Local& l = pairs[i++ % pairs.size()];
+    const geometry::detail::Screen s = geometry::detail::screen_pair(l.a, l.b, l.span, 0.43);
+    settled += s.verdict != geometry::detail::Screen::Verdict::Unsure ? 1 : 0;
+    benchmark::DoNotOptimize(s);
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["settled"] = static_cast<double>(settled) / static_cast<double>(i);
+}
+BENCHMARK(BM_ScreenPair);
 
 void BM_TrianglesIntersect(benchmark::State& state) {
   const std::vector<Pair> pairs = make_pairs(static_cast<double>(state.range(0)) / 100.0);

@@ -82,7 +82,14 @@ void LocalTracker::update(const PairQuery& q, std::vector<LmdPair>& lmds, LocalT
       e.result = geometry::sampled_triangle_distance(a, moved_b);
       return;
     }
-    e.partial = !geometry::triangle_distance_within(a, moved_b, limit, e.result);
+    // The reduction's walks start from every candidate of a search, most
+    // of them far from a minimum: the single-precision screen settles many
+    // of their neighbours. A local update's pairs stand at or next to a
+    // minimum, where candidates tie (flush faces, shared vertices) and the
+    // screen settles few: there it only added its cost (local update p99
+    // 11 -> 20 us on cad-engine; docs/benchmarks-changes.md).
+    e.partial = !(known ? geometry::triangle_distance_within(a, moved_b, limit, e.result)
+                        : geometry::triangle_distance_within_unscreened(a, moved_b, limit, e.result));
     if (e.partial) e.result.distance = limit;
   };
   auto evaluate = [&](std::uint32_t ta, std::uint32_t tb, std::uint32_t owner,

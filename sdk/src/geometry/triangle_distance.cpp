@@ -3,6 +3,7 @@
 #include "geometry/closest_points.h"
 #include "geometry/predicates.h"
 #include "geometry/triangle_intersection.h"
+#include "geometry/triangle_screen.h"
 
 #include <glm/geometric.hpp>
 
@@ -168,14 +169,14 @@ struct Prepared {
   }
 };
 
-// 16 eps times the largest distance of a vertex of a or b (local
-// coordinates) from the local origin: a margin for the rounding of a
+// The largest distance of a vertex of a or b (local coordinates) from the
+// local origin. 16 eps times it is a margin for the rounding of a
 // candidate's distance (see Bounds).
-double distance_rounding(const Triangle& a, const Triangle& b) {
+double pair_span(const Triangle& a, const Triangle& b) {
   double span2 = 0.0;
   for (const Triangle* t : {&a, &b})
     for (const Vec3& v : t->v) span2 = std::max(span2, length2(v));
-  return 16.0 * kEpsilon * std::sqrt(span2);
+  return std::sqrt(span2);
 }
 
 // Lower bounds from the two normals: along each triangle's unit normal u,
@@ -196,7 +197,7 @@ struct Bounds {
   double apart = 0.0;      // the triangles' gap along the wider-apart normal: at most their distance
   bool separated = false;  // by more than `error` along a normal: the triangles do not meet
 
-  // `rounding`: distance_rounding of the pair.
+  // `rounding`: 16 eps times pair_span.
   Bounds(const Prepared& pa, const Prepared& pb, double rounding) : error(rounding) {
     const Prepared* p[2] = {&pa, &pb};
     for (int k = 0; k < 2; ++k) {
@@ -300,6 +301,52 @@ void add_near_candidates(const Prepared& pa, const Prepared& pb, const Bounds& b
   }
 }
 
+// The candidates the screen (triangle_screen.h) could not rule out, each
+// computed as add_near_candidates computes it: the same arithmetic, so the
+// same bits. An edge pair adds a candidate only when its closest points
+// are inside both edges, as there.
+void add_screened_candidates(const Prepared& pa, const Prepared& pb, std::uint16_t near, CandidateList& cand) {
+  for (int o = 0; o < 6; ++o) {
+    if (!(near >> o & 1u)) continue;
+    if (o < 3) {
+      const Vec3& v = pa.t->v[o];
+      cand.add(v, pb.closest_point(v));
+    } else {
+      const Vec3& v = pb.t->v[o - 3];
+      cand.add(pa.closest_point(v), v);
+    }
+  }
+  const Triangle &a = *pa.t, &b = *pb.t;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      if (!(near >> (6 + 3 * i + j) & 1u)) continue;
+      Vec2 st;
+      bool near_parallel = false;
+      if (!interior_params_segment_segment(a.v[i], pa.e[i], pa.ee[i], b.v[j], pb.e[j], pb.ee[j], st,
+                                           near_parallel))
+        continue;
+      Vec3 p = a.v[i] + st.x * pa.e[i], q = b.v[j] + st.y * pb.e[j];
+      if (near_parallel) {
+        const Vec2 sp = polished(a.v[i], pa.e[i], pa.ee[i], b.v[j], pb.e[j], pb.ee[j], st);
+        const Vec3 pp = a.v[i] + sp.x * pa.e[i], qp = b.v[j] + sp.y * pb.e[j];
+        if (length2(qp - pp) < length2(q - p)) p = pp, q = qp;
+      }
+      cand.add(p, q);
+    }
+}
+
+// How many candidates closest_result would average: those within the tie
+// slack of the least.
+int tie_count(const CandidateList& cand, double tie_slack) {
+  double min_d2 = INFINITY;
+  for (int i = 0; i < cand.n; ++i) min_d2 = std::min(min_d2, cand.c[i].d2);
+  const double tie = std::sqrt(min_d2) + tie_slack;
+  const double tie2 = std::max(tie * tie, min_d2);
+  int ties = 0;
+  for (int i = 0; i < cand.n; ++i) ties += cand.c[i].d2 <= tie2 ? 1 : 0;
+  return ties;
+}
+
 // The result of intersecting triangles: the middle of their intersection
 // set and the features holding it.
 TriangleDistance intersection_result(const TriangleIntersection& hit, const Triangle& a, const Triangle& b,
@@ -364,7 +411,8 @@ TriangleDistance closest_result(const CandidateList& cand, double min_d2, double
 // What a caller wants of a pair: `every`, the full enumeration even where
 // the pruned one applies; `limit`, only a distance up to it (past it, only
 // that it is past); kDetails, points, features and ties, else the distance
-// alone (a template argument: the full answer's path stays as lean as it was).
+// alone; kScreen, the single-precision screen first (both template
+// arguments: the exact kernel's path stays as lean as it was).
 struct Want {
   bool every = false;
   double limit = INFINITY;
@@ -372,13 +420,14 @@ struct Want {
 
 // triangle_distance's answer into `out` (its distance alone without
 // kDetails) and true, or false when the distance is past want.limit.
-template <bool kDetails>
+template <bool kDetails, bool kScreen>
 bool distance_of(const Triangle& a_world, const Triangle& b_world, const Want& want, TriangleDistance& out) {
   const bool a_flat = collinear3d(a_world.v[0], a_world.v[1], a_world.v[2]);
   const bool b_flat = collinear3d(b_world.v[0], b_world.v[1], b_world.v[2]);
   const Vec3 origin = local_origin(a_world, b_world);
   const Triangle a = translated(a_world, origin), b = translated(b_world, origin);
-  const double rounding = distance_rounding(a, b);
+  const double span = pair_span(a, b);
+  const double rounding = 16.0 * kEpsilon * span;
   // Sizes name features and set the tie slack; the distance alone needs
   // neither: it is the least candidate's, ties or not.
   const double size_a = kDetails ? longest_edge(a_world) : 0.0;
@@ -412,6 +461,32 @@ bool distance_of(const Triangle& a_world, const Triangle& b_world, const Want& w
   };
 
   if (!want.every && !a_flat && !b_flat) {
+    if constexpr (kScreen) {
+      // Single precision first (triangle_screen.h): most pairs are past the
+      // limit or have one or two candidates that can be the closest, and
+      // only those are computed, in double precision. What the screen
+      // cannot settle goes on to the exact kernel below.
+      const detail::Screen screen = detail::screen_pair(a, b, span, want.limit);
+      if (screen.verdict != detail::Screen::Verdict::Unsure) {
+        // Not proved apart: the exact test first, which the exact kernel
+        // runs on such pairs too (its double-precision bounds separate no
+        // pair that meets).
+        if (!screen.apart) {
+          const TriangleIntersection hit = intersect_triangles(a_world, b_world, a_flat, b_flat);
+          if (hit.intersects) return intersecting(hit);
+        }
+        if (screen.verdict == detail::Screen::Verdict::Farther) return false;
+        const Prepared pa(a), pb(b);
+        if (pa.usable() && pb.usable()) {
+          add_screened_candidates(pa, pb, screen.near, cand);
+          // Two tied candidates average the same in either order; three or
+          // more in the order add_near_candidates finds them, so those
+          // pairs go on.
+          if (cand.n > 0 && (!kDetails || tie_count(cand, tie_slack) <= 2)) return closest();
+          cand.n = 0;
+        }
+      }
+    }
     const Prepared pa(a), pb(b);
     if (pa.usable() && pb.usable()) {
       const Bounds bounds(pa, pb, rounding);
@@ -438,23 +513,39 @@ bool distance_of(const Triangle& a_world, const Triangle& b_world, const Want& w
 
 TriangleDistance triangle_distance(const Triangle& a, const Triangle& b) {
   TriangleDistance out;
-  distance_of<true>(a, b, Want{}, out);
+  distance_of<true, true>(a, b, Want{}, out);
   return out;
 }
 
 TriangleDistance triangle_distance_every_candidate(const Triangle& a, const Triangle& b) {
   TriangleDistance out;
-  distance_of<true>(a, b, Want{true, INFINITY}, out);
+  distance_of<true, false>(a, b, Want{true, INFINITY}, out);
   return out;
 }
 
 bool triangle_distance_within(const Triangle& a, const Triangle& b, double limit, TriangleDistance& out) {
-  return distance_of<true>(a, b, Want{false, limit}, out);
+  return distance_of<true, true>(a, b, Want{false, limit}, out);
 }
 
 double triangle_distance_value(const Triangle& a, const Triangle& b, double limit) {
   TriangleDistance out;
-  return distance_of<false>(a, b, Want{false, limit}, out) ? out.distance : std::numeric_limits<double>::infinity();
+  return distance_of<false, true>(a, b, Want{false, limit}, out) ? out.distance : std::numeric_limits<double>::infinity();
+}
+
+TriangleDistance triangle_distance_unscreened(const Triangle& a, const Triangle& b) {
+  TriangleDistance out;
+  distance_of<true, false>(a, b, Want{}, out);
+  return out;
+}
+
+bool triangle_distance_within_unscreened(const Triangle& a, const Triangle& b, double limit, TriangleDistance& out) {
+  return distance_of<true, false>(a, b, Want{false, limit}, out);
+}
+
+double triangle_distance_value_unscreened(const Triangle& a, const Triangle& b, double limit) {
+  TriangleDistance out;
+  return distance_of<false, false>(a, b, Want{false, limit}, out) ? out.distance
+                                                                  : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace prox::geometry

@@ -25,7 +25,10 @@ struct TriangleDistance {
 // Exact in the sense that matters for the engine: the distance is the true
 // Euclidean distance between the closed triangles up to floating-point
 // rounding of order 1e-16 times the triangles' size (see docs/precision.md),
-// never a sampled approximation; the intersection verdict is exact. Swapping
+// never a sampled approximation; the intersection verdict is exact. A
+// single-precision screen with an error bound settles most pairs first and
+// leaves only the candidates that can be the closest to double precision
+// (docs/precision.md); the answers are the exact kernel's bit for bit. Swapping
 // the arguments or rotating either triangle's vertices gives the same
 // distance, the same verdict and the same features (re-indexed).
 TriangleDistance triangle_distance(const Triangle& a, const Triangle& b);
@@ -47,6 +50,15 @@ bool triangle_distance_within(const Triangle& a, const Triangle& b, double limit
 // worked out, nor the candidates that could only tie with the closest: for
 // a branch and bound on the distance alone.
 double triangle_distance_value(const Triangle& a, const Triangle& b, double limit = INFINITY);
+
+// The three above without the single-precision screen that runs before the
+// exact candidates (triangle_screen.h): the same answers bit for bit. The
+// reference the screen is tested against, and the faster choice for pairs
+// at a local minimum, whose candidates tie and which the screen settles
+// seldom (local tracking's updates).
+TriangleDistance triangle_distance_unscreened(const Triangle& a, const Triangle& b);
+bool triangle_distance_within_unscreened(const Triangle& a, const Triangle& b, double limit, TriangleDistance& out);
+double triangle_distance_value_unscreened(const Triangle& a, const Triangle& b, double limit = INFINITY);
 
 // Relative tolerances, as fractions of a triangle's longest edge, used to
 // name features and to treat near-equal candidate distances as ties.
