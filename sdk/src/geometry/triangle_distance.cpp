@@ -224,6 +224,18 @@ struct Bounds {
   }
 };
 
+// Vertex i of a (o = i) or of b (o = 3 + i) against the other's face.
+[[gnu::always_inline]] inline void add_vertex_face(const Prepared& pa, const Prepared& pb, int o,
+                                                   CandidateList& cand) {
+  if (o < 3) {
+    const Vec3& v = pa.t->v[o];
+    cand.add(v, pb.closest_point(v));
+  } else {
+    const Vec3& v = pb.t->v[o - 3];
+    cand.add(pa.closest_point(v), v);
+  }
+}
+
 // Two non-degenerate triangles: the same closest set from fewer candidates.
 // - An edge pair whose closest points include an end of an edge adds
 //   nothing: that end against the other triangle (a vertex-face candidate)
@@ -251,16 +263,9 @@ void add_near_candidates(const Prepared& pa, const Prepared& pb, const Bounds& b
   auto found = [&](double d2) {
     if (d2 < best2) best2 = d2, reach = std::min(std::sqrt(best2), limit) + tie_slack;
   };
-  // Vertex i of a (o = i) or of b (o = 3 + i) against the other's face.
   const double* vertex_bound = &bounds.vertex[0][0];
   auto vertex_face = [&](int o) {
-    if (o < 3) {
-      const Vec3& v = pa.t->v[o];
-      cand.add(v, pb.closest_point(v));
-    } else {
-      const Vec3& v = pb.t->v[o - 3];
-      cand.add(pa.closest_point(v), v);
-    }
+    add_vertex_face(pa, pb, o, cand);
     found(cand.c[cand.n - 1].d2);
   };
   // Vertices against faces: the nearest by its bound first (a small best
@@ -306,16 +311,8 @@ void add_near_candidates(const Prepared& pa, const Prepared& pb, const Bounds& b
 // same bits. An edge pair adds a candidate only when its closest points
 // are inside both edges, as there.
 void add_screened_candidates(const Prepared& pa, const Prepared& pb, std::uint16_t near, CandidateList& cand) {
-  for (int o = 0; o < 6; ++o) {
-    if (!(near >> o & 1u)) continue;
-    if (o < 3) {
-      const Vec3& v = pa.t->v[o];
-      cand.add(v, pb.closest_point(v));
-    } else {
-      const Vec3& v = pb.t->v[o - 3];
-      cand.add(pa.closest_point(v), v);
-    }
-  }
+  for (int o = 0; o < 6; ++o)
+    if (near >> o & 1u) add_vertex_face(pa, pb, o, cand);
   const Triangle &a = *pa.t, &b = *pb.t;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
