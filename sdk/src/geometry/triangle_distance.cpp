@@ -526,7 +526,8 @@ bool triangle_distance_within(const Triangle& a, const Triangle& b, double limit
 
 double triangle_distance_value(const Triangle& a, const Triangle& b, double limit) {
   TriangleDistance out;
-  return distance_of<false, true>(a, b, Want{false, limit}, out) ? out.distance : std::numeric_limits<double>::infinity();
+  return distance_of<false, true>(a, b, Want{false, limit}, out) ? out.distance
+                                                                 : std::numeric_limits<double>::infinity();
 }
 
 TriangleDistance triangle_distance_unscreened(const Triangle& a, const Triangle& b) {

@@ -49,8 +49,12 @@ inline f4 pick(m4 m, f4 yes, f4 no) {
   return {{m.l[0] ? yes.l[0] : no.l[0], m.l[1] ? yes.l[1] : no.l[1], m.l[2] ? yes.l[2] : no.l[2],
            m.l[3] ? yes.l[3] : no.l[3]}};
 }
-inline m4 both(m4 a, m4 b) { return {{a.l[0] && b.l[0], a.l[1] && b.l[1], a.l[2] && b.l[2], a.l[3] && b.l[3]}}; }
-inline m4 either(m4 a, m4 b) { return {{a.l[0] || b.l[0], a.l[1] || b.l[1], a.l[2] || b.l[2], a.l[3] || b.l[3]}}; }
+inline m4 both(m4 a, m4 b) {
+  return {{a.l[0] && b.l[0], a.l[1] && b.l[1], a.l[2] && b.l[2], a.l[3] && b.l[3]}};
+}
+inline m4 either(m4 a, m4 b) {
+  return {{a.l[0] || b.l[0], a.l[1] || b.l[1], a.l[2] || b.l[2], a.l[3] || b.l[3]}};
+}
 inline m4 flip(m4 a) { return {{!a.l[0], !a.l[1], !a.l[2], !a.l[3]}}; }
 #endif
 
@@ -75,6 +79,11 @@ inline F3 operator-(F3 a, F3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 inline float dot(F3 a, F3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline F3 cross(F3 a, F3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 inline P4 all(F3 p) { return {splat(p.x), splat(p.y), splat(p.z)}; }
+// Three points as lanes, the fourth lane repeating the first.
+inline P4 lanes(const F3 (&p)[3]) {
+  return {f4{p[0].x, p[1].x, p[2].x, p[0].x}, f4{p[0].y, p[1].y, p[2].y, p[0].y},
+          f4{p[0].z, p[1].z, p[2].z, p[0].z}};
+}
 
 // Sines of a triangle's angles below 2^-10, squared: slivers, left to the
 // exact kernel. Above it the error bound grows as 1 / sine
@@ -221,11 +230,7 @@ Screen screen_pair(const Triangle& a, const Triangle& b, double span, double lim
   const double error = 2.0 * kScreenError * std::max(1.0, 1.0 / (16.0 * std::sqrt(sin2)));
   out.error = error / scale;
 
-  // Each triangle's vertices as lanes (the fourth lane repeats the first).
-  const P4 va = {f4{ta.v[0].x, ta.v[1].x, ta.v[2].x, ta.v[0].x}, f4{ta.v[0].y, ta.v[1].y, ta.v[2].y, ta.v[0].y},
-                 f4{ta.v[0].z, ta.v[1].z, ta.v[2].z, ta.v[0].z}};
-  const P4 vb = {f4{tb.v[0].x, tb.v[1].x, tb.v[2].x, tb.v[0].x}, f4{tb.v[0].y, tb.v[1].y, tb.v[2].y, tb.v[0].y},
-                 f4{tb.v[0].z, tb.v[1].z, tb.v[2].z, tb.v[0].z}};
+  const P4 va = lanes(ta.v), vb = lanes(tb.v);
 
   // Separated along either normal by more than the error: the triangles do
   // not meet. (gap > error |n|, squared: no root.)
@@ -233,14 +238,13 @@ Screen screen_pair(const Triangle& a, const Triangle& b, double span, double lim
     const Thin& t = k == 0 ? ta : tb;
     const f4 own = dot(k == 0 ? va : vb, all(t.n)), their = dot(k == 0 ? vb : va, all(t.n));
     const float gap = std::max(lane_low(their) - lane_high(own), lane_low(own) - lane_high(their));
-    out.apart = gap > 0.0f &&
-                static_cast<double>(gap) * static_cast<double>(gap) > error * error * static_cast<double>(t.nn);
+    const auto g = static_cast<double>(gap);
+    out.apart = gap > 0.0f && g * g > error * error * static_cast<double>(t.nn);
   }
 
   // The fifteen candidates, four lanes at a time.
   const f4 face_b = point_triangle_d2(va, tb), face_a = point_triangle_d2(vb, ta);
-  const P4 ea = {f4{ta.e[0].x, ta.e[1].x, ta.e[2].x, ta.e[0].x}, f4{ta.e[0].y, ta.e[1].y, ta.e[2].y, ta.e[0].y},
-                 f4{ta.e[0].z, ta.e[1].z, ta.e[2].z, ta.e[0].z}};
+  const P4 ea = lanes(ta.e);
   const f4 ee_a = {ta.ee[0], ta.ee[1], ta.ee[2], ta.ee[0]};
   const f4 inv_ee_a = {ta.inv_ee[0], ta.inv_ee[1], ta.inv_ee[2], ta.inv_ee[0]};
   EdgeLanes edges[3];  // against b's edge j
