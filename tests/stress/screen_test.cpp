@@ -27,8 +27,8 @@ void PrintTo(const Family& family, std::ostream* os);
 
 namespace {
 
-constexpr int kCases = 2000;
-constexpr std::uint64_t kSeed = 20261206;
+constexpr int kScreenCases = 2000;
+constexpr std::uint64_t kScreenSeed = 20261206;
 
 using geometry::TriangleDistance;
 using Verdict = geometry::detail::Screen::Verdict;
@@ -112,7 +112,7 @@ class ScreenFamily : public ::testing::TestWithParam<Family> {};
 TEST_P(ScreenFamily, AnswersAreTheUnscreenedBitForBit) {
   const Family& family = GetParam();
   Tally tally;
-  for (const Case& c : family.generate(kSeed, kCases)) {
+  for (const Case& c : family.generate(kScreenSeed, kScreenCases)) {
     tally.check(c.a, c.b);
     tally.check(c.b, c.a);
   }
@@ -131,7 +131,7 @@ INSTANTIATE_TEST_SUITE_P(Families, ScreenFamily, ::testing::ValuesIn(families())
 // far from it: here the screen must settle most pairs itself (else the
 // comparison above says little), and still agree bit for bit.
 TEST(Screen, SettlesMostRandomPairsAndAgreesBitForBit) {
-  std::mt19937_64 rng(kSeed);
+  std::mt19937_64 rng(kScreenSeed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   auto point = [&] { return Vec3(unit(rng), unit(rng), unit(rng)); };
   Tally tally;
