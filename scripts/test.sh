@@ -98,7 +98,7 @@ CC=clang CXX=clang++ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWit
   -DPROX_BUILD_TESTS=OFF -DPROX_BUILD_SAMPLES=OFF -DPROX_SHARED_ASSETS_DIR="$(assets_dir)" \
   -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >/dev/null
 cmake --build build/fuzz -j "$jobs" --target proxima_fuzz_obj proxima_fuzz_poses proxima_fuzz_gltf \
-  proxima_fuzz_gltf_capi proxima_fuzz_create_mesh proxima_fuzz_capi proxima_fuzz_hid_descriptor
+  proxima_fuzz_gltf_capi proxima_fuzz_create_mesh proxima_fuzz_capi proxima_fuzz_hid_descriptor proxima_fuzz_kernel
 tests/fuzz/run.sh build/fuzz "$(assets_dir)" "${PROX_FUZZ_SECONDS:-12}"
 
 stage "release"

@@ -53,7 +53,7 @@ def main():
     assets, out = sys.argv[1], sys.argv[2]
     here = os.path.dirname(os.path.abspath(__file__))
     corpora = {name: os.path.join(out, name) for name in
-               ("obj", "poses", "gltf", "gltf_capi", "create_mesh", "capi", "hid_descriptor")}
+               ("obj", "poses", "gltf", "gltf_capi", "create_mesh", "capi", "hid_descriptor", "kernel")}
     for d in corpora.values():
         os.makedirs(d, exist_ok=True)
 

@@ -14,7 +14,7 @@ shift 3
 jobs=${PROX_FUZZ_JOBS:-$(nproc)}
 here=$(cd "$(dirname "$0")" && pwd)
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(obj poses gltf gltf_capi create_mesh capi hid_descriptor)
+[ ${#targets[@]} -gt 0 ] || targets=(obj poses gltf gltf_capi create_mesh capi hid_descriptor kernel)
 corpus=$build/fuzz-corpus
 artifacts=$build/fuzz-artifacts
 mkdir -p "$artifacts"
