@@ -11,11 +11,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 namespace {
 
 using prox::Triangle;
 using prox::geometry::TriangleDistance;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Equal bits, or both NaN (whose payloads may differ).
 bool same(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0 || (std::isnan(x) && std::isnan(y)); }
@@ -59,8 +62,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   PROX_FUZZ_CHECK(same(prox::geometry::triangle_distance(a, b), exact), "triangle_distance differs (%.17g)",
                   exact.distance);
   const double d = exact.distance;
-  for (const double limit : {0.0, 0.5 * d, std::nextafter(d, 0.0), d, std::nextafter(d, INFINITY), 2.0 * d,
-                             double{INFINITY}}) {
+  for (const double limit : {0.0, 0.5 * d, std::nextafter(d, 0.0), d, std::nextafter(d, kInf), 2.0 * d, kInf}) {
     TriangleDistance screened, unscreened;
     const bool in = prox::geometry::triangle_distance_within(a, b, limit, screened);
     const bool in_exact = prox::geometry::triangle_distance_within_unscreened(a, b, limit, unscreened);

@@ -335,7 +335,7 @@ void add_screened_candidates(const Prepared& pa, const Prepared& pb, std::uint16
 // How many candidates closest_result would average: those within the tie
 // slack of the least.
 int tie_count(const CandidateList& cand, double tie_slack) {
-  double min_d2 = INFINITY;
+  double min_d2 = std::numeric_limits<double>::infinity();
   for (int i = 0; i < cand.n; ++i) min_d2 = std::min(min_d2, cand.c[i].d2);
   const double tie = std::sqrt(min_d2) + tie_slack;
   const double tie2 = std::max(tie * tie, min_d2);

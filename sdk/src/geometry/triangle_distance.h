@@ -5,6 +5,7 @@
 #include "geometry/types.h"
 
 #include <cmath>
+#include <limits>
 
 namespace prox::geometry {
 
@@ -58,7 +59,8 @@ double triangle_distance_value(const Triangle& a, const Triangle& b, double limi
 // seldom (local tracking's updates).
 TriangleDistance triangle_distance_unscreened(const Triangle& a, const Triangle& b);
 bool triangle_distance_within_unscreened(const Triangle& a, const Triangle& b, double limit, TriangleDistance& out);
-double triangle_distance_value_unscreened(const Triangle& a, const Triangle& b, double limit = INFINITY);
+double triangle_distance_value_unscreened(const Triangle& a, const Triangle& b,
+                                          double limit = std::numeric_limits<double>::infinity());
 
 // Relative tolerances, as fractions of a triangle's longest edge, used to
 // name features and to treat near-equal candidate distances as ties.
