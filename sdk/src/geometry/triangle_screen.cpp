@@ -212,13 +212,15 @@ float segment_line_gap(F3 p0, F3 d, float dd, F3 q0, F3 e) {
 Screen screen_pair(const Triangle& a, const Triangle& b, double span, double limit) {
   Screen out;
   // 2^-e for span = m 2^e, m in [1, 2), from the bits (a call to ldexp
-  // and ilogb cost a tenth of the screen); spans outside double's normal
-  // range are left to the exact kernel. Scaled by it (exactly), float's
-  // range holds every product the screen forms, wherever the pair is.
+  // and ilogb cost a tenth of the screen). Scaled by it (exactly), float's
+  // range holds every product the screen forms, wherever the pair is. Spans
+  // outside [2^-256, 2^256] are left to the exact kernel: there its own
+  // predicates' products (cubes of coordinates) leave double's normal range,
+  // and only it can give its own answer.
   std::uint64_t bits;
   std::memcpy(&bits, &span, sizeof bits);
   const std::uint64_t exponent = bits >> 52;  // span > 0: no sign bit
-  if (!(span > 0.0) || exponent == 0 || exponent >= 2046) return out;
+  if (!(span > 0.0) || exponent < 1023 - 256 || exponent > 1023 + 256) return out;
   const std::uint64_t scale_bits = (2046 - exponent) << 52;
   double scale;
   std::memcpy(&scale, &scale_bits, sizeof scale);
