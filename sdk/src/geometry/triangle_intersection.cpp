@@ -310,7 +310,11 @@ void coplanar_hull(const PointSet& s, const Vec3& normal, double merge, Triangle
   if (n > 1) --h;  // the last point repeats the first
   // drop_axis keeps orientation seen from +axis; flip if the normal points the other way.
   const bool reverse = normal[axis] < 0.0;
-  r.count = h;
+  // A hull of n points has at most n. Non-finite coordinates (whose turns
+  // compare false) can chain up to 2n - 2, more than r holds: the engine
+  // never passes them (meshes and poses refuse them), but a direct call
+  // must stay inside its arrays (the kernel fuzzer found it).
+  r.count = std::min(h, TriangleIntersection::kMaxPoints);
   for (int i = 0; i < r.count; ++i) r.points[i] = hull[reverse ? (r.count - 1 - i) : i].p;
 }
 
