@@ -12,11 +12,10 @@
 
 namespace prox::geometry::detail {
 
-// The exact kernel's candidates, numbered as the screen's bits:
+// The exact kernel's fifteen candidates, numbered as the screen's bits:
 // 0..2   vertex i of a against b's face,
 // 3..5   vertex i of b against a's face,
 // 6 + 3 i + j   edge i of a against edge j of b.
-inline constexpr int kScreenCandidates = 15;
 
 // The screen's error bound, as a fraction of the pair's span (the largest
 // distance of a vertex from the pair's local origin): every candidate's
