@@ -357,7 +357,7 @@ std::string summary_json(const SceneRun& run, const Options& opt) {
   j.end_object();
 
   // The performance targets this scene can measure (docs/benchmarks.md,
-  // "The run of 2026-12-05 against the speed targets").
+  // the latest "The run of ... against the speed targets").
   const Accuracy pa = accuracy(run, "precise");
   j.key("targets").begin_object();
   if (!rows_of(run, "fcl", false).empty()) {

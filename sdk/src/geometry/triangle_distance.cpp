@@ -506,18 +506,27 @@ bool distance_of(const Triangle& a_world, const Triangle& b_world, const Want& w
   return closest();
 }
 
-}  // namespace
-
-TriangleDistance triangle_distance(const Triangle& a, const Triangle& b) {
+// The public entry points' three shapes, with and without the screen.
+template <bool kScreen>
+TriangleDistance full_answer(const Triangle& a, const Triangle& b, const Want& want = Want{}) {
   TriangleDistance out;
-  distance_of<true, true>(a, b, Want{}, out);
+  distance_of<true, kScreen>(a, b, want, out);
   return out;
 }
 
-TriangleDistance triangle_distance_every_candidate(const Triangle& a, const Triangle& b) {
+template <bool kScreen>
+double value_within(const Triangle& a, const Triangle& b, double limit) {
   TriangleDistance out;
-  distance_of<true, false>(a, b, Want{true, INFINITY}, out);
-  return out;
+  return distance_of<false, kScreen>(a, b, Want{false, limit}, out) ? out.distance
+                                                                    : std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+TriangleDistance triangle_distance(const Triangle& a, const Triangle& b) { return full_answer<true>(a, b); }
+
+TriangleDistance triangle_distance_every_candidate(const Triangle& a, const Triangle& b) {
+  return full_answer<false>(a, b, Want{true, INFINITY});
 }
 
 bool triangle_distance_within(const Triangle& a, const Triangle& b, double limit, TriangleDistance& out) {
@@ -525,15 +534,11 @@ bool triangle_distance_within(const Triangle& a, const Triangle& b, double limit
 }
 
 double triangle_distance_value(const Triangle& a, const Triangle& b, double limit) {
-  TriangleDistance out;
-  return distance_of<false, true>(a, b, Want{false, limit}, out) ? out.distance
-                                                                 : std::numeric_limits<double>::infinity();
+  return value_within<true>(a, b, limit);
 }
 
 TriangleDistance triangle_distance_unscreened(const Triangle& a, const Triangle& b) {
-  TriangleDistance out;
-  distance_of<true, false>(a, b, Want{}, out);
-  return out;
+  return full_answer<false>(a, b);
 }
 
 bool triangle_distance_within_unscreened(const Triangle& a, const Triangle& b, double limit, TriangleDistance& out) {
@@ -541,9 +546,7 @@ bool triangle_distance_within_unscreened(const Triangle& a, const Triangle& b, d
 }
 
 double triangle_distance_value_unscreened(const Triangle& a, const Triangle& b, double limit) {
-  TriangleDistance out;
-  return distance_of<false, false>(a, b, Want{false, limit}, out) ? out.distance
-                                                                  : std::numeric_limits<double>::infinity();
+  return value_within<false>(a, b, limit);
 }
 
 }  // namespace prox::geometry
