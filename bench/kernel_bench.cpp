@@ -15,7 +15,6 @@
 #include <benchmark/benchmark.h>
 #include <glm/geometric.hpp>
 
-#include <algorithm>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -96,26 +95,11 @@ BENCHMARK(BM_TriangleDistanceWithin)->Arg(1)->Arg(0)->ArgName("screen");
 // candidate), on the pairs above in the local coordinates the kernel gives
 // it, against a limit half of them are past.
 void BM_ScreenPair(benchmark::State& state) {
-  struct Local {
-    Triangle a, b;
-    double span;
-  };
-  std::vector<Local> pairs;
-  for (const Pair& p : make_pairs(0.1)) {
-    Vec3 lo = p.a.v[0], hi = p.a.v[0];
-    for (const Triangle* t : {&p.a, &p.b})
-      for (const Vec3& v : t->v) lo = glm::min(lo, v), hi = glm::max(hi, v);
-    const Vec3 origin = 0.5 * lo + 0.5 * hi;
-    Local l{};
-    for (int k = 0; k < 3; ++k) {
-      l.a.v[k] = p.a.v[k] - origin, l.b.v[k] = p.b.v[k] - origin;
-      l.span = std::max({l.span, glm::length(l.a.v[k]), glm::length(l.b.v[k])});
-    }
-    pairs.push_back(l);
-  }
+  std::vector<geometry::detail::LocalPair> pairs;
+  for (const Pair& p : make_pairs(0.1)) pairs.push_back(geometry::detail::local_pair(p.a, p.b));
   std::size_t i = 0, settled = 0;
   for (auto _ : state) {
-    const Local& l = pairs[i++ % pairs.size()];
+    const geometry::detail::LocalPair& l = pairs[i++ % pairs.size()];
     const geometry::detail::Screen s = geometry::detail::screen_pair(l.a, l.b, l.span, 0.43);
     settled += s.verdict != geometry::detail::Screen::Verdict::Unsure ? 1 : 0;
     benchmark::DoNotOptimize(s);

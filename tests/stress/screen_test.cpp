@@ -9,9 +9,7 @@
 #include "geometry/triangle_distance.h"
 #include "geometry/triangle_screen.h"
 
-#include <glm/geometric.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -49,17 +47,8 @@ std::string difference(const TriangleDistance& x, const TriangleDistance& y) {
 
 // The screen's verdict on a pair, as triangle_distance asks for it.
 geometry::detail::Screen screen_of(const Triangle& a, const Triangle& b, double limit) {
-  Vec3 lo = a.v[0], hi = a.v[0];
-  for (const Triangle* t : {&a, &b})
-    for (const Vec3& v : t->v) lo = glm::min(lo, v), hi = glm::max(hi, v);
-  const Vec3 origin = 0.5 * lo + 0.5 * hi;
-  Triangle la, lb;
-  double span2 = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    la.v[k] = a.v[k] - origin, lb.v[k] = b.v[k] - origin;
-    span2 = std::max({span2, glm::dot(la.v[k], la.v[k]), glm::dot(lb.v[k], lb.v[k])});
-  }
-  return geometry::detail::screen_pair(la, lb, std::sqrt(span2), limit);
+  const geometry::detail::LocalPair p = geometry::detail::local_pair(a, b);
+  return geometry::detail::screen_pair(p.a, p.b, p.span, limit);
 }
 
 Verdict verdict_of(const Triangle& a, const Triangle& b, double limit) { return screen_of(a, b, limit).verdict; }

@@ -523,6 +523,13 @@ double value_within(const Triangle& a, const Triangle& b, double limit) {
 
 }  // namespace
 
+detail::LocalPair detail::local_pair(const Triangle& a, const Triangle& b) {
+  const Vec3 origin = local_origin(a, b);
+  LocalPair p{translated(a, origin), translated(b, origin), 0.0};
+  p.span = pair_span(p.a, p.b);
+  return p;
+}
+
 TriangleDistance triangle_distance(const Triangle& a, const Triangle& b) { return full_answer<true>(a, b); }
 
 TriangleDistance triangle_distance_every_candidate(const Triangle& a, const Triangle& b) {

@@ -47,4 +47,13 @@ struct Screen {
 // (infinity for every pair).
 Screen screen_pair(const Triangle& a, const Triangle& b, double span, double limit);
 
+// A pair as triangle_distance hands it to the screen, for tests and
+// benchmarks that call screen_pair themselves: translated by the middle of
+// the pair's bounding box, with its span (triangle_distance.cpp's arithmetic).
+struct LocalPair {
+  Triangle a, b;
+  double span = 0.0;
+};
+LocalPair local_pair(const Triangle& a, const Triangle& b);
+
 }  // namespace prox::geometry::detail
