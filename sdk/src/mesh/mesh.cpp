@@ -1,6 +1,7 @@
 #include "mesh/mesh.h"
 
 #include "common/worker_pool.h"
+#include "geometry/fast_math.h"
 #include "geometry/predicates.h"
 
 #include <glm/geometric.hpp>
@@ -108,12 +109,15 @@ class Welder {
   std::vector<Vec3> positions_;
 };
 
+// Out of line: the rare path, so that length_of's common one inlines.
+[[gnu::noinline]] double length_by_hypot(const Vec3& d) { return std::hypot(d.x, d.y, d.z); }
+
 // |d|. Its square under- or overflows only for lengths beyond about 1e+-145,
 // where hypot's scaling takes over.
-double length_of(const Vec3& d) {
+inline double length_of(const Vec3& d) {
   const double l2 = glm::dot(d, d);
   if (l2 > 1e-290 && l2 < 1e290) return std::sqrt(l2);
-  return std::hypot(d.x, d.y, d.z);
+  return length_by_hypot(d);
 }
 
 struct FaceGeometry {
@@ -128,7 +132,7 @@ FaceGeometry face_geometry(const Vec3& a, const Vec3& b, const Vec3& c) {
   // overflowing or underflowing at any scale; normals and angles do not
   // depend on it. The clamp keeps the factor itself finite for subnormal input.
   const Vec3 m = glm::max(glm::abs(a), glm::max(glm::abs(b), glm::abs(c)));
-  const double s = std::ldexp(1.0, -std::max(std::ilogb(std::max({m.x, m.y, m.z})), -1020));
+  const double s = geometry::power_of_two_below(std::max({m.x, m.y, m.z}));
   const Vec3 e[3] = {s * b - s * a, s * c - s * b, s * a - s * c};
   // As in the distance kernel: on a sliver the rounding of the cross product
   // along the longest edge would tilt the plane, so that part is projected out.
@@ -143,13 +147,13 @@ FaceGeometry face_geometry(const Vec3& a, const Vec3& b, const Vec3& c) {
   const double len = length_of(n);
   if (!(len > 0.0)) return g;
   g.normal = n / len;
-  // |cross| is twice the area at every corner; atan2 stays accurate near 0
-  // and pi. The angle opposite the longest edge, the largest (pi / 3 or
+  // |cross| is twice the area at every corner; an angle from it and the
+  // dot product (atan2, not acos) stays accurate near 0 and pi. The angle opposite the longest edge, the largest (pi / 3 or
   // more), is what the other two leave of pi: one atan2 fewer, and a
   // rounding of its size.
   const int i = k, j = (k + 1) % 3;
-  g.angle[i] = std::atan2(len, -glm::dot(e[i], e[(i + 2) % 3]));
-  g.angle[j] = std::atan2(len, -glm::dot(e[j], e[(j + 2) % 3]));
+  g.angle[i] = geometry::angle_from(len, -glm::dot(e[i], e[(i + 2) % 3]));
+  g.angle[j] = geometry::angle_from(len, -glm::dot(e[j], e[(j + 2) % 3]));
   g.angle[(k + 2) % 3] = std::max(0.0, kPi - g.angle[i] - g.angle[j]);
   return g;
 }
