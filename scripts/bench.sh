@@ -7,7 +7,8 @@
 # --reference-every 10, --scene path-r).
 # Works on a fresh Debian 12 machine; installs what it needs (matplotlib and
 # fast-simplification from PyPI into build/bench-venv, Coal's wheel into
-# build/coal-venv). About 10 minutes.
+# build/coal-venv). About 4 minutes on the 2-core development machine once
+# those are installed, the build included; allow 10 on a fresh one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/deps.sh
