@@ -257,3 +257,43 @@ TEST(MinimumDistance, TheNodePairBoundIsNeverAboveTheTrianglesBelowIt) {
 
 }  // namespace
 }  // namespace prox::testing
+
+namespace prox::testing {
+namespace {
+
+// Triangles 1e-122 across (and a coordinate of 1e-322) beside ones of a few
+// units, from a fuzzed input (tests/fuzz/regressions/create_mesh): their
+// circumcentres came out 0 / 0, the NaN spread up the tree, and every node
+// pair compared false, so the mesh was never nearer itself than infinity.
+TEST(MinimumDistance, TinyTrianglesBesideLargeOnesKeepTheTreeFinite) {
+  const std::vector<double> p = {-19.854, -19.854, -12.855, -1.7132422564468183e-122, -1.7132422564468183e-122,
+                                 -1.7132422564468183e-122, -1.7132422564468183e-122, 3.0429479402230786e-144, 0.0,
+                                 0.0, 13.485, 0.0, 0.0, 3.425, 0.0, 0.0, 0.0, 1.7292297604443629e-322, 0.0, 0.0, 5.84};
+  const std::vector<std::uint32_t> idx = {0, 4, 2, 2, 5, 1, 2, 4, 5, 4, 0, 5, 5, 3, 6, 6, 4, 0, 5, 1, 2, 2, 6, 4};
+  Status s;
+  const Mesh m = Mesh::build({p.data(), 7, idx.data(), static_cast<std::uint32_t>(idx.size() / 3)}, s);
+  ASSERT_TRUE(s) << s.message();
+  const Snch snch(m);
+  for (std::uint32_t i = 0; i < snch.nodes().size(); ++i) {
+    const SnchNode& n = snch.node(i);
+    ASSERT_TRUE(std::isfinite(n.center.x) && std::isfinite(n.center.y) && std::isfinite(n.center.z) &&
+                std::isfinite(n.radius))
+        << "node " << i;
+    if (!n.is_leaf()) continue;
+    for (const Vec3& v : m.triangle(n.first).v) {
+      const Vec3 d = v - n.center;
+      // To rounding relative to the leaf's own size, however small.
+      EXPECT_LE(std::hypot(d.x, d.y, d.z), n.radius * (1.0 + 1e-12))
+          << "leaf " << i << " misses a vertex of triangle " << n.first;
+    }
+  }
+  const PairQuery q{&m, &snch, Pose{}, &m, &snch, Pose{}, 0.0};
+  EXPECT_EQ(minimum_distance(q, std::numeric_limits<double>::infinity()), 0.0);
+  // Moved 1 unit apart along x: a finite distance, at most the move.
+  const PairQuery apart{&m, &snch, Pose{}, &m, &snch, Pose{glm::dmat3(1.0), Vec3(1.0, 0.0, 0.0)}, 0.0};
+  const double d = minimum_distance(apart, std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(std::isfinite(d) && d >= 0.0 && d <= 1.0) << d;
+}
+
+}  // namespace
+}  // namespace prox::testing

@@ -20,8 +20,11 @@ struct Sphere {
 };
 
 // The smallest sphere holding a triangle: around the longest edge when the
-// triangle is obtuse (or degenerate), else its circumsphere.
-Sphere triangle_sphere(const Triangle& t) {
+// triangle is obtuse (or degenerate), else its circumsphere. Its products
+// reach the fifth power of the edges, so it is used for triangles whose
+// sphere comes out between about 1e-60 and 1e+60 across (every mesh in
+// physical units).
+Sphere smallest_sphere(const Triangle& t) {
   for (int k = 0; k < 3; ++k) {
     const Vec3 &a = t.v[k], &b = t.v[(k + 1) % 3], &c = t.v[(k + 2) % 3];
     // Angle at c is >= 90 degrees: the sphere on edge ab holds c.
@@ -40,6 +43,29 @@ Sphere triangle_sphere(const Triangle& t) {
   double r2 = 0.0;
   for (const Vec3& v : t.v) r2 = std::max(r2, glm::dot(v - center, v - center));
   return {center, std::sqrt(r2)};
+}
+
+// A sphere holding a triangle of any finite size: about the middle of its
+// box, to its farthest vertex, each length by hypot (which neither under-
+// nor overflows), grown by their rounding. Not the smallest.
+Sphere box_sphere(const Triangle& t) {
+  const Vec3 lo = glm::min(glm::min(t.v[0], t.v[1]), t.v[2]), hi = glm::max(glm::max(t.v[0], t.v[1]), t.v[2]);
+  const Vec3 center = 0.5 * lo + 0.5 * hi;
+  double r = 0.0;
+  for (const Vec3& v : t.v) {
+    const Vec3 d = v - center;
+    r = std::max(r, std::hypot(d.x, d.y, d.z));
+  }
+  return {center, r * (1.0 + 0x1p-49) + 0x1p-1070};
+}
+
+Sphere triangle_sphere(const Triangle& t) {
+  const Sphere s = smallest_sphere(t);
+  // Below about 1e-60 the products underflow (a circumcentre of 0 / 0, or
+  // a radius rounded to nothing); above 1e+60 they overflow.
+  const bool finite = std::isfinite(s.center.x) && std::isfinite(s.center.y) && std::isfinite(s.center.z);
+  if (finite && s.radius >= 1e-60 && s.radius <= 1e60) return s;
+  return box_sphere(t);
 }
 
 // The box from lo to hi, its half extents rounded up so that it holds both.
