@@ -90,6 +90,14 @@ inline P4 lanes(const F3 (&p)[3]) {
 // (docs/precision.md).
 constexpr double kSliverSin2 = 1.0 / 1048576.0;
 
+// Edges shorter than 2^-30 of the pair's span (squared, in the scaled
+// units) are left to the exact kernel: its coordinates are rounded to
+// 2^-53 of the span, no longer far below such an edge, so which of its
+// candidates fall off an edge's end, and which tie, is its rounding's to
+// decide, not something the screen's bound can foresee (a triangle 1e13
+// across beside one 3.5e30 long, from the kernel fuzzer).
+constexpr float kShortEdge2 = 0x1p-60f;
+
 inline F3 to_float(const Vec3& v, double scale) {
   return {static_cast<float>(v.x * scale), static_cast<float>(v.y * scale), static_cast<float>(v.z * scale)};
 }
@@ -227,6 +235,8 @@ Screen screen_pair(const Triangle& a, const Triangle& b, double span, double lim
   const Thin ta(a, scale), tb(b, scale);
   const double sin2 = std::min(ta.sin2, tb.sin2);
   if (!(sin2 >= kSliverSin2)) return out;
+  for (int k = 0; k < 3; ++k)
+    if (!(ta.ee[k] >= kShortEdge2 && tb.ee[k] >= kShortEdge2)) return out;
   // The error bound in the scaled units (span is in [1, 2) of them):
   // kScreenError of the span, growing as 1 / sine below a sine of 1/16.
   const double error = 2.0 * kScreenError * std::max(1.0, 1.0 / (16.0 * std::sqrt(sin2)));
