@@ -255,12 +255,6 @@ TEST(MinimumDistance, TheNodePairBoundIsNeverAboveTheTrianglesBelowIt) {
   }
 }
 
-}  // namespace
-}  // namespace prox::testing
-
-namespace prox::testing {
-namespace {
-
 // Triangles 1e-122 across (and a coordinate of 1e-322) beside ones of a few
 // units, from a fuzzed input (tests/fuzz/regressions/create_mesh): their
 // circumcentres came out 0 / 0, the NaN spread up the tree, and every node

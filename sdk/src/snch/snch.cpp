@@ -19,18 +19,41 @@ struct Sphere {
   double radius = 0.0;
 };
 
+// A sphere holding a triangle of any finite size: about the middle of its
+// box, to its farthest vertex, each length by hypot (which neither under-
+// nor overflows), grown by their rounding. Not the smallest.
+[[gnu::noinline]] Sphere box_sphere(const Triangle& t) {
+  const Vec3 lo = glm::min(glm::min(t.v[0], t.v[1]), t.v[2]), hi = glm::max(glm::max(t.v[0], t.v[1]), t.v[2]);
+  const Vec3 center = 0.5 * lo + 0.5 * hi;
+  double r = 0.0;
+  for (const Vec3& v : t.v) {
+    const Vec3 d = v - center;
+    r = std::max(r, std::hypot(d.x, d.y, d.z));
+  }
+  return {center, r * (1.0 + 0x1p-49) + 0x1p-1070};
+}
+
+// Whether a sphere from the products below can be trusted: they reach the
+// fifth power of the edges, and under- or overflow for spheres outside
+// about 1e-60..1e+60 across (never a mesh in physical units). The centre's
+// sum is finite exactly when its coordinates are: they are within the 1e50
+// the API accepts, and a NaN stays a NaN.
+bool in_range(const Vec3& center, double radius) {
+  return radius >= 1e-60 && radius <= 1e60 && std::isfinite(center.x + center.y + center.z);
+}
+
 // The smallest sphere holding a triangle: around the longest edge when the
-// triangle is obtuse (or degenerate), else its circumsphere. Its products
-// reach the fifth power of the edges, so it is used for triangles whose
-// sphere comes out between about 1e-60 and 1e+60 across (every mesh in
-// physical units).
-Sphere smallest_sphere(const Triangle& t) {
+// triangle is obtuse (or degenerate), else its circumsphere; box_sphere()
+// where that is out of range.
+Sphere triangle_sphere(const Triangle& t) {
   for (int k = 0; k < 3; ++k) {
     const Vec3 &a = t.v[k], &b = t.v[(k + 1) % 3], &c = t.v[(k + 2) % 3];
     // Angle at c is >= 90 degrees: the sphere on edge ab holds c.
     if (glm::dot(a - c, b - c) <= 0.0) {
       const Vec3 m = 0.5 * (a + b);
-      return {m, 0.5 * glm::length(b - a)};
+      const double r = 0.5 * glm::length(b - a);
+      if (!in_range(m, r)) return box_sphere(t);
+      return {m, r};
     }
   }
   const Vec3 a = t.v[1] - t.v[0], b = t.v[2] - t.v[0];
@@ -42,30 +65,9 @@ Sphere smallest_sphere(const Triangle& t) {
   // square root, of the largest square: the same as the largest root).
   double r2 = 0.0;
   for (const Vec3& v : t.v) r2 = std::max(r2, glm::dot(v - center, v - center));
-  return {center, std::sqrt(r2)};
-}
-
-// A sphere holding a triangle of any finite size: about the middle of its
-// box, to its farthest vertex, each length by hypot (which neither under-
-// nor overflows), grown by their rounding. Not the smallest.
-Sphere box_sphere(const Triangle& t) {
-  const Vec3 lo = glm::min(glm::min(t.v[0], t.v[1]), t.v[2]), hi = glm::max(glm::max(t.v[0], t.v[1]), t.v[2]);
-  const Vec3 center = 0.5 * lo + 0.5 * hi;
-  double r = 0.0;
-  for (const Vec3& v : t.v) {
-    const Vec3 d = v - center;
-    r = std::max(r, std::hypot(d.x, d.y, d.z));
-  }
-  return {center, r * (1.0 + 0x1p-49) + 0x1p-1070};
-}
-
-Sphere triangle_sphere(const Triangle& t) {
-  const Sphere s = smallest_sphere(t);
-  // Below about 1e-60 the products underflow (a circumcentre of 0 / 0, or
-  // a radius rounded to nothing); above 1e+60 they overflow.
-  const bool finite = std::isfinite(s.center.x) && std::isfinite(s.center.y) && std::isfinite(s.center.z);
-  if (finite && s.radius >= 1e-60 && s.radius <= 1e60) return s;
-  return box_sphere(t);
+  const double r = std::sqrt(r2);
+  if (!in_range(center, r)) return box_sphere(t);
+  return {center, r};
 }
 
 // The box from lo to hi, its half extents rounded up so that it holds both.
