@@ -27,16 +27,16 @@ inline double power_of_two_below(double m) {
 
 // The angle whose sine and cosine are proportional to y and x, for y >= 0:
 // atan2(y, x) in [0, pi], to about 1e-12 of itself.
-
 inline double angle_from(double y, double x) {
   const double ax = std::abs(x);
   // Into [0, 1] (z = y / |x|, or |x| / y where y is the larger), then into
   // [-tan(pi/8), tan(pi/8)] by atan(z) = pi/4 + atan((z - 1) / (z + 1)):
-  // one division either way.
+  // one division either way, and selects of values rather than branches
+  // (a mesh's corners fall either way at random).
   const bool steep = y > ax;
-  const double big = steep ? y : ax, small = steep ? ax : y;
+  const double big = std::max(y, ax), small = std::min(y, ax);
   const bool upper = small > 0.41421356237309503 * big;
-  const double z = upper ? (small - big) / (small + big) : small / big;
+  const double z = (upper ? small - big : small) / (upper ? small + big : big);
   // atan(z) / z as a polynomial in z^2, fitted on that interval (relative
   // error below 8e-13).
   const double t = z * z;

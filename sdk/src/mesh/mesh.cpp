@@ -148,9 +148,10 @@ FaceGeometry face_geometry(const Vec3& a, const Vec3& b, const Vec3& c) {
   if (!(len > 0.0)) return g;
   g.normal = n / len;
   // |cross| is twice the area at every corner; an angle from it and the
-  // dot product (atan2, not acos) stays accurate near 0 and pi. The angle opposite the longest edge, the largest (pi / 3 or
-  // more), is what the other two leave of pi: one atan2 fewer, and a
-  // rounding of its size.
+  // dot product (as atan2 has it, not acos) stays accurate near 0 and pi.
+  // The angle opposite the longest edge, the largest (pi / 3 or more), is
+  // what the other two leave of pi: one angle fewer, and a rounding of its
+  // size.
   const int i = k, j = (k + 1) % 3;
   g.angle[i] = geometry::angle_from(len, -glm::dot(e[i], e[(i + 2) % 3]));
   g.angle[j] = geometry::angle_from(len, -glm::dot(e[j], e[(j + 2) % 3]));
