@@ -9,7 +9,6 @@
 #include "geometry/triangle_distance.h"
 #include "geometry/triangle_screen.h"
 
-
 #include <cmath>
 #include <cstring>
 #include <random>

@@ -1,8 +1,9 @@
 #include "geometry/triangle_screen.h"
 
+#include "geometry/fast_math.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 namespace prox::geometry::detail {
 namespace {
@@ -219,19 +220,13 @@ float segment_line_gap(F3 p0, F3 d, float dd, F3 q0, F3 e) {
 
 Screen screen_pair(const Triangle& a, const Triangle& b, double span, double limit) {
   Screen out;
-  // 2^-e for span = m 2^e, m in [1, 2), from the bits (a call to ldexp
-  // and ilogb cost a tenth of the screen). Scaled by it (exactly), float's
-  // range holds every product the screen forms, wherever the pair is. Spans
+  // Scaled by 2^-e for span = m 2^e, m in [1, 2) (exactly), float's range
+  // holds every product the screen forms, wherever the pair is. Spans
   // outside [2^-256, 2^256] are left to the exact kernel: there its own
   // predicates' products (cubes of coordinates) leave double's normal range,
   // and only it can give its own answer.
-  std::uint64_t bits;
-  std::memcpy(&bits, &span, sizeof bits);
-  const std::uint64_t exponent = bits >> 52;  // span > 0: no sign bit
-  if (!(span > 0.0) || exponent < 1023 - 256 || exponent > 1023 + 256) return out;
-  const std::uint64_t scale_bits = (2046 - exponent) << 52;
-  double scale;
-  std::memcpy(&scale, &scale_bits, sizeof scale);
+  if (!(span >= 0x1p-256 && span < 0x1p257)) return out;
+  const double scale = power_of_two_below(span);
   const Thin ta(a, scale), tb(b, scale);
   const double sin2 = std::min(ta.sin2, tb.sin2);
   if (!(sin2 >= kSliverSin2)) return out;
